@@ -1,0 +1,1 @@
+"""The experiments as code (plans that yield steps) and their TOML presets."""
