@@ -1,0 +1,164 @@
+"""Named, typed model parameters in SI units.
+
+Units used throughout (the interpretation of seed 000's Table 1 is in docs/model.md, section 2):
+
+* per-unit-length line parameters of one strip of width W: R_s in ohm/m (per electrode), the shunt
+  branch resistances R and R_p in ohm*m, the CPE coefficient Q0 in S*s^n/m;
+* clamp-area values with the same per-length units, lumped over the clamp length ``clamp_length``;
+  the contact resistance as a specific (area) resistance in ohm*m^2, lumped over the clamp area.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Literal
+
+
+@dataclass(frozen=True)
+class Fluid:
+    name: str
+    density: float  # kg/m^3
+    viscosity: float  # Pa*s (dynamic)
+
+
+WATER_25C = Fluid("water", 997.0, 0.89e-3)
+AIR_25C = Fluid("air", 1.184, 1.849e-5)
+
+
+@dataclass(frozen=True)
+class Geometry:
+    length: float  # m, free length L (x = 0 at the clamp edge)
+    width: float  # m, W
+    thickness: float  # m, h
+    clamp_length: float  # m, extent of the clamp along the strip
+    clamp_width: float  # m
+
+    @property
+    def clamp_area(self) -> float:
+        return self.clamp_length * self.clamp_width
+
+    @property
+    def second_moment(self) -> float:
+        """I = W h^3 / 12 (m^4)."""
+        return self.width * self.thickness**3 / 12.0
+
+    @property
+    def cross_section(self) -> float:
+        return self.width * self.thickness
+
+
+@dataclass(frozen=True)
+class LineElectrical:
+    """Distributed RC line with a CPE shunt branch (seed 000, fig. 2, eq. 2-4), per unit length."""
+
+    R_s: float  # ohm/m, surface resistance of one electrode
+    R: float  # ohm*m, resistance in series with the CPE
+    R_p: float  # ohm*m, leak (bulk) resistance
+    Q0: float  # S*s^n/m, CPE coefficient (eq. 1)
+    n: float  # CPE index, 0 < n <= 1
+
+
+@dataclass(frozen=True)
+class ClampElectrical:
+    """Clamp-area values of Table 1 (seed 000), in SI per-length / specific units."""
+
+    r_cont: float  # ohm*m^2, specific contact resistance of one electrode/clamp interface
+    R_sc: float  # ohm/m
+    R_c: float  # ohm*m
+    R_pc: float  # ohm*m
+    Q0c: float  # S*s^n/m
+    n_c: float
+
+
+@dataclass(frozen=True)
+class Mechanics:
+    E: float  # Pa, static Young's modulus
+    density: float  # kg/m^3 of the IPMC (Nafion + platinum)
+    gamma: float  # viscoelastic coefficient of eq. 23 (dimensionless)
+    alpha: float  # J/C, stress per charge density (eq. 15)
+
+
+@dataclass(frozen=True)
+class Specimen:
+    """Everything the seed-000 model needs for one strip in one clamp state."""
+
+    geometry: Geometry
+    fluid: Fluid
+    line: LineElectrical
+    clamp: ClampElectrical
+    mechanics: Mechanics
+    Kt_bar: float  # non-dimensional torsional spring k_t L / (E I), eq. 31
+    pressure: float | None = None  # Pa, clamping pressure this state belongs to (None: not from a law)
+    n_modes: int = 10
+    sensor_x: float | None = None  # m, laser spot position; None = the tip (x = L)
+    charge: Literal["capacitive", "total"] = "capacitive"  # which current charges the strip, docs/model.md 4.2
+    modal_force: Literal["virtual_work", "paper"] = "virtual_work"  # docs/model.md 4.3
+
+    def with_(self, **changes) -> "Specimen":
+        return replace(self, **changes)
+
+    @property
+    def x_sensor(self) -> float:
+        return self.geometry.length if self.sensor_x is None else self.sensor_x
+
+
+@dataclass(frozen=True)
+class Table1Row:
+    """One row of seed 000 Table 1 exactly as printed (mixed units)."""
+
+    pressure_kPa: float
+    R_cont_mohm_cm2: float
+    R_sc_ohm_per_cm: float
+    R_c_ohm_cm: float
+    R_pc_ohm_cm: float
+    Q0c_per_cm: float
+    n_c: float
+
+    def to_si(self) -> ClampElectrical:
+        return ClampElectrical(
+            r_cont=self.R_cont_mohm_cm2 * 1e-3 * 1e-4,  # mohm*cm^2 -> ohm*m^2
+            R_sc=self.R_sc_ohm_per_cm * 100.0,  # ohm/cm -> ohm/m
+            R_c=self.R_c_ohm_cm * 0.01,  # ohm*cm -> ohm*m
+            R_pc=self.R_pc_ohm_cm * 0.01,
+            Q0c=self.Q0c_per_cm * 100.0,  # S*s^n/cm -> S*s^n/m
+            n_c=self.n_c,
+        )
+
+
+TABLE1 = (
+    Table1Row(612, 54.1281, 22.53, 7.5, 2.529e4, 0.0021, 0.58),
+    Table1Row(1837, 43.12, 22.53, 11.26, 3.35e4, 0.0015, 0.64),
+    Table1Row(3062, 38.75, 22.53, 14.0, 3.83e4, 0.0011, 0.63),
+    Table1Row(4287, 40.5, 22.53, 13.25, 2.24e4, 0.0012, 0.65),
+)
+
+# Table 2: first natural frequency (Hz) and K_t bar per clamping pressure (kPa).
+TABLE2_PRESSURE_KPA = (612.0, 1837.0, 3062.0, 4287.0)
+TABLE2_F1_HZ = (3.29, 3.54, 3.78, 3.29)
+TABLE2_KT_BAR = (4.17, 5.67, 8.02, 4.17)
+
+# Table 3: E (MPa), xi_1, mu_v (kg/m), gamma, alpha (J/C).
+TABLE3 = {"E_MPa": 313.0, "xi1": 0.18, "mu_v": 0.02, "gamma": 0.14, "alpha": 0.105}
+
+
+@dataclass(frozen=True)
+class HammersteinParams:
+    """Seed 001 grey box: nonlinear electric stage, then a linear current -> displacement stage (DESIGN.md 4).
+
+    Electric stage: V_in -> R_s in series with [C_dl (or CPE Q, n) || nonlinear conductance i_nl(v_c)].
+    Mechanical stage: delta = K/(s + eps) * wn^2/(s^2 + 2 zeta wn s + wn^2) * I_abs.
+    """
+
+    R_s: float = 20.0  # ohm
+    C_dl: float = 4e-3  # F
+    law: Literal["poly", "butler_volmer", "varcap"] = "poly"
+    g1: float = 2e-3  # S, linear leak (poly law)
+    g3: float = 1e-3  # S/V^2, cubic term (poly law)
+    i0: float = 2e-4  # A, exchange current (Butler-Volmer law)
+    v_t: float = 0.15  # V, Tafel voltage (Butler-Volmer law)
+    c2: float = 0.3  # 1/V^2, voltage-dependent capacitance C(v) = C_dl (1 + c2 v^2) (varcap law)
+    K: float = 2.0  # m/(A*s) gain of the leaky integrator
+    eps: float = 0.2  # 1/s leak
+    wn: float = 2 * 3.141592653589793 * 25.0  # rad/s, first mode in air
+    zeta: float = 0.08
+    extras: dict = field(default_factory=dict)

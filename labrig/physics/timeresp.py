@@ -1,0 +1,72 @@
+"""Time responses of any linear transfer function H(s) to any sampled drive, accurate against H(j omega).
+
+Method: the exponential window (numerical inverse Laplace transform on the line Re s = sigma). The drive
+u(t), at rest before t = 0 and zero-padded, is multiplied by exp(-sigma t), transformed with an FFT, multiplied
+by H(sigma + j omega_k), transformed back and multiplied by exp(sigma t). Because H is evaluated right of its
+singularities, this is exact for any causal H, including the fractional CPE (s^n), the distributed line
+(sqrt N) and the 1/s of charge, which make an ordinary FFT convolution wrap around; sigma is chosen so the
+wrapped part is damped by exp(-sigma T_fft) = 1e-9.
+
+The drive samples are read as a band-limited signal, so a record analysed back by DFT at its own bins
+returns H(j omega) exactly (tests/test_physics_timeresp.py). H is evaluated exactly on the lowest bins and
+on a logarithmic grid above, interpolated with a cubic spline (error < 1e-7 relative), which keeps 600 s
+at 1 kHz under a second.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import numpy as np
+from scipy import fft as sfft
+from scipy.interpolate import CubicSpline
+
+TransferFunction = Callable[[np.ndarray], np.ndarray]
+
+_DAMPING = np.log(1e9)  # sigma * T_fft
+_EXACT_BINS = 256
+_PER_DECADE = 160
+
+
+def _grid_values(tfs: Sequence[TransferFunction], s_bins: np.ndarray) -> list[np.ndarray]:
+    """Each H at s_bins: exact for the first bins, spline in log(omega) above."""
+    n = len(s_bins)
+    if n <= 4 * _EXACT_BINS:
+        return [np.asarray(tf(s_bins), complex) for tf in tfs]
+    sigma = s_bins[0].real
+    w = s_bins.imag
+    w_lo, w_hi = w[_EXACT_BINS - 1], w[-1]
+    decades = np.log10(w_hi / w_lo)
+    w_log = np.geomspace(w_lo, w_hi, max(int(decades * _PER_DECADE), 8))
+    out = []
+    for tf in tfs:
+        exact = np.asarray(tf(s_bins[:_EXACT_BINS]), complex)
+        h_log = np.asarray(tf(sigma + 1j * w_log), complex)
+        spline = CubicSpline(np.log(w_log), np.stack([h_log.real, h_log.imag], axis=1))
+        rest = spline(np.log(w[_EXACT_BINS:]))
+        out.append(np.concatenate([exact, rest[:, 0] + 1j * rest[:, 1]]))
+    return out
+
+
+def simulate_many(tfs: Sequence[TransferFunction], u: np.ndarray, fs: float, pad: float = 1.0) -> list[np.ndarray]:
+    """Responses of several transfer functions to the same drive ``u`` sampled at ``fs`` (system at rest at t=0).
+
+    ``pad``: zero padding as a fraction of the record (1.0 doubles it) so the response's own tail has room.
+    """
+    u = np.asarray(u, float)
+    n = u.size
+    if n == 0:
+        return [np.zeros(0) for _ in tfs]
+    nfft = sfft.next_fast_len(int(n * (1.0 + pad)) + 16, real=True)
+    T = nfft / fs
+    sigma = _DAMPING / T
+    t = np.arange(n) / fs
+    U = sfft.rfft(u * np.exp(-sigma * t), nfft)
+    s_bins = sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
+    grow = np.exp(sigma * t)
+    return [sfft.irfft(U * H, nfft)[:n] * grow for H in _grid_values(tfs, s_bins)]
+
+
+def simulate(tf: TransferFunction, u: np.ndarray, fs: float, pad: float = 1.0) -> np.ndarray:
+    """Response of one transfer function H(s) to the drive ``u`` (see module docstring)."""
+    return simulate_many([tf], u, fs, pad)[0]

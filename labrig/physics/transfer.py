@@ -1,0 +1,125 @@
+"""Transfer functions of seed 000: tip displacement per volt by mode superposition (eq. 28-38), and current.
+
+The modal force is the virtual work of the actuation moment on each mode, F_i(s) = int_0^L M_app phi_i'' dx,
+evaluated by Gauss-Legendre quadrature on fixed nodes (``modal_force="virtual_work"``, default). Seed 000
+instead integrates f_app = d^2 M_app/dx^2 (eq. 26) against phi_i without the end terms (eq. 34-37,
+``modal_force="paper"``); docs/model.md 4.3 shows why that misses the moment at the free end.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from labrig.physics import beam, hydro
+from labrig.physics.impedance import charging_admittance, impedance, propagation, voltage_along
+from labrig.physics.params import Specimen
+
+QUAD_NODES = 48  # exact to 1e-13 for 10 modes up to 1 kHz (checked against 300 nodes)
+
+
+@dataclass(frozen=True)
+class ModalSet:
+    """Modes of one specimen: roots, frequencies, damping, modal masses and shapes on quadrature nodes."""
+
+    beta_L: np.ndarray
+    omega: np.ndarray  # rad/s, eq. 33 with mu_v(omega_i) self-consistent
+    xi: np.ndarray  # eq. 33 with the dissipative fluid sign
+    mu_v: np.ndarray  # kg/m, rho A + m_a(omega_i)
+    modal_mass: np.ndarray  # eq. 35, kg*m (shapes normalised to int phi^2 dx = L)
+    phi_sensor: np.ndarray  # phi_i at the laser spot
+    nodes: np.ndarray  # x of the quadrature nodes (m)
+    weights: np.ndarray
+    phi: np.ndarray  # (nodes, modes)
+    phi2: np.ndarray  # (nodes, modes) second derivative
+
+    @property
+    def f_Hz(self) -> np.ndarray:
+        return self.omega / (2 * np.pi)
+
+
+def mu_v(omega: np.ndarray | float, sp: Specimen) -> np.ndarray:
+    """mu_v(omega) = rho A + m_a(omega) (eq. 24), kg/m."""
+    g = sp.geometry
+    return sp.mechanics.density * g.cross_section + hydro.added_mass(omega, g.width, sp.fluid)
+
+
+def damping_ratio(omega: np.ndarray, sp: Specimen) -> np.ndarray:
+    """Eq. 33 with Sader's sign: xi_i = (gamma + m_d Im Gamma(omega_i) / mu_v(omega_i)) / 2."""
+    g = sp.geometry
+    md = hydro.displaced_mass(g.width, sp.fluid)
+    return 0.5 * (sp.mechanics.gamma + md * hydro.gamma_rect(omega, g.width, sp.fluid).imag / mu_v(omega, sp))
+
+
+@lru_cache(maxsize=512)
+def modal_set(sp: Specimen) -> ModalSet:
+    g, m = sp.geometry, sp.mechanics
+    L = g.length
+    bl = beam.beta_L_roots(sp.Kt_bar, sp.n_modes)
+    omega = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(1.0, sp), L)
+    for _ in range(30):  # fixed point: the added mass depends on the frequency it loads
+        new = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(omega, sp), L)
+        if np.allclose(new, omega, rtol=1e-12):
+            break
+        omega = new
+    u, w = np.polynomial.legendre.leggauss(QUAD_NODES)
+    nodes, weights = 0.5 * L * (u + 1.0), 0.5 * L * w
+    phi = np.stack([beam.mode_shape(nodes, L, b, sp.Kt_bar) for b in bl], axis=1)
+    phi2 = np.stack([beam.mode_shape(nodes, L, b, sp.Kt_bar, 2) for b in bl], axis=1)
+    norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
+    phi, phi2 = phi / norm, phi2 / norm
+    phi_s = np.array([beam.mode_shape(np.array([sp.x_sensor]), L, b, sp.Kt_bar)[0] for b in bl]) / norm
+    muv = mu_v(omega, sp)
+    return ModalSet(bl, omega, damping_ratio(omega, sp), muv, muv * L, phi_s, nodes, weights, phi, phi2)
+
+
+def actuation_moment_nodes(s: np.ndarray, sp: Specimen, ms: ModalSet) -> np.ndarray:
+    """M_app(x, s)/V0 on the quadrature nodes (eq. 25), shape (len(s), nodes)."""
+    g = sp.geometry
+    y = charging_admittance(s, sp)[:, None]
+    return sp.mechanics.alpha * g.thickness * y * voltage_along(s, ms.nodes, sp) / s[:, None]
+
+
+def modal_forces(s: np.ndarray, sp: Specimen, ms: ModalSet | None = None) -> np.ndarray:
+    """F_i(s)/V0(s), shape (len(s), modes): virtual work int M_app phi_i'' dx, or eq. 34 as printed."""
+    ms = ms or modal_set(sp)
+    s = np.atleast_1d(np.asarray(s, complex))
+    mapp = actuation_moment_nodes(s, sp, ms) * ms.weights[None, :]
+    if sp.modal_force == "paper":
+        # f_app = M_app'' = N M_app (g'' = N g), integrated against phi_i with no end terms
+        return (propagation(s, sp.line) ** 2)[:, None] * (mapp @ ms.phi)
+    return mapp @ ms.phi2
+
+
+def displacement_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
+    """Eq. 38: H(s) = w(x_m, s)/V0(s) = sum_i phi_i(x_m) F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), m/V."""
+    ms = modal_set(sp)
+    s = np.atleast_1d(np.asarray(s, complex))
+    den = ms.modal_mass[None, :] * (s[:, None] ** 2 + 2 * ms.xi * ms.omega * s[:, None] + ms.omega**2)
+    return (modal_forces(s, sp, ms) / den) @ ms.phi_sensor
+
+
+def admittance_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
+    """I0(s)/V0(s) = 1/Z(s) (eq. 12), A/V."""
+    return 1.0 / impedance(np.atleast_1d(np.asarray(s, complex)), sp)
+
+
+def frf(f_Hz: np.ndarray, sp: Specimen) -> np.ndarray:
+    """Displacement FRF H(j 2 pi f) in m/V."""
+    return displacement_tf(2j * np.pi * np.asarray(f_Hz, float), sp)
+
+
+def static_deflection(s: np.ndarray, sp: Specimen, x: float | None = None) -> np.ndarray:
+    """Quasi-static w(x, s)/V0 of the eigen-moment beam: w'' = M_app/EI, w(0) = w'(0) = 0.
+
+    An internal moment loads no external support, so the root spring is not rotated: this is the
+    limit the modal sum must reach at low frequency (tests/test_physics_transfer.py).
+    """
+    ms = modal_set(sp)
+    x = sp.x_sensor if x is None else x
+    s = np.atleast_1d(np.asarray(s, complex))
+    EI = sp.mechanics.E * sp.geometry.second_moment
+    kernel = np.clip(x - ms.nodes, 0.0, None) * ms.weights  # w(x) = int_0^x (x - u) M(u)/EI du
+    return actuation_moment_nodes(s, sp, ms) @ kernel / EI
