@@ -1,0 +1,272 @@
+"""Load-cell indicator (Dacell UMMA-K10, 98 N, on a weighing indicator): continuous RS-232 frames.
+
+Frame: ``ST,GS,+0012.34Kg\\r\\n``: status ``ST`` stable / ``US`` unstable / ``OL`` overload, type
+``GS`` gross / ``NT`` net, a signed 7-character value and the unit (``Kg`` = kgf, or ``N``).
+Commands (assumed, indicator-specific; see docs/instruments_serial.md): ``Z\\r\\n`` zero,
+``T\\r\\n`` tare; the indicator does not answer, so each is confirmed from the stream.
+
+A reader thread (``background=True``) keeps the newest frame; with ``background=False`` the stream is
+parsed on demand from what the port already holds (deterministic, used for replay). Bytes that do
+not form a frame are skipped up to the next LF; ``force()`` raises ``StaleStream`` when no frame came
+for ``stale_s`` wall seconds (``MalformedReply`` if only garbage came) and ``Overload`` on ``OL``.
+"""
+
+from __future__ import annotations
+
+import re
+import threading
+import time
+from collections import deque
+from dataclasses import dataclass
+from typing import Callable, NamedTuple, Protocol
+
+from drivers.errors import InstrumentError, InstrumentTimeout, MalformedReply, Overload, StaleStream
+from drivers.serial_port import Command, SerialInstrument, SerialLike, io_errors
+from drivers.transcript import Transcript
+
+G_N = 9.80665  # N per kgf (standard gravity)
+CAPACITY_N = 98.0
+COUNT_KGF = 0.01  # display resolution of the frames (2 decimals)
+_FRAME = re.compile(rb"(ST|US|OL),(GS|NT),([+-][0-9. ]{7}) ?(kg|Kg|KG|N)\r\n")
+_UNIT_N = {b"kg": G_N, b"Kg": G_N, b"KG": G_N, b"N": 1.0}
+
+
+class Clock(Protocol):
+    """The rig's clock (``labrig.clock``): the only source of time for ``wait_stable``."""
+
+    def now(self) -> float: ...
+
+    def sleep(self, seconds: float) -> None: ...
+
+
+@dataclass(frozen=True)
+class Frame:
+    status: str  # "ST" | "US" | "OL"
+    kind: str  # "GS" | "NT"
+    force_N: float  # nan when the value field of an OL frame is not a number
+    raw: bytes
+    seq: int
+    t_wall: float  # time.monotonic() when parsed
+
+    @property
+    def stable(self) -> bool:
+        return self.status == "ST"
+
+
+class ForceReading(NamedTuple):
+    force_N: float
+    stable: bool
+
+
+def parse_frame(line: bytes, seq: int = 0, t_wall: float = 0.0) -> Frame | None:
+    """One CR LF-terminated line as a ``Frame``, or None when it is not a frame."""
+    m = _FRAME.fullmatch(line)
+    if m is None:
+        return None
+    status, kind, value, unit = m.groups()
+    try:
+        force = float(value.replace(b" ", b"")) * _UNIT_N[unit]
+    except ValueError:
+        if status != b"OL":
+            return None
+        force = float("nan")  # indicators print anything on overload
+    return Frame(status.decode(), kind.decode(), force, line, seq, t_wall)
+
+
+class LoadCell(SerialInstrument):
+    """Load-cell indicator driver. ``port``: pyserial URL, device path or open port (e.g. ``ReplaySerial``)."""
+
+    default_name = "loadcell"
+    zero_cmd = Command("Z", "Zero the gross reading (assumed command; refused outside the zero range).", confirmed=False)
+    tare_cmd = Command("T", "Tare: switch to net, present load becomes zero (assumed command).", confirmed=False)
+
+    def __init__(
+        self,
+        port: str | SerialLike,
+        *,
+        name: str | None = None,
+        transcript: Transcript | None = None,
+        stale_s: float = 0.5,
+        timeout_s: float = 0.05,
+        background: bool = True,
+        baudrate: int = 9600,
+        max_line: int = 64,
+    ):
+        super().__init__(port, name=name, transcript=transcript, timeout_s=timeout_s, baudrate=baudrate)
+        self.stale_s, self.max_line = stale_s, max_line
+        self._cond = threading.Condition()
+        self._partial = bytearray()
+        self._frames: deque[Frame] = deque(maxlen=256)
+        self._seq = 0
+        self._garbage = bytearray()  # unparseable bytes since the last good frame (a sample is kept)
+        self._garbage_n = 0
+        self.bytes_skipped = 0  # total unparseable bytes (diagnostics)
+        self._error: InstrumentError | None = None
+        self._t_open = time.monotonic()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        if background:
+            with io_errors(self.name):
+                self.port.reset_input_buffer()  # frames queued before we opened are old
+            self._thread = threading.Thread(target=self._reader, name=f"{self.name}-reader", daemon=True)
+            self._thread.start()
+
+    # -- stream parsing ------------------------------------------------------------------------
+    def _reader(self) -> None:
+        while not self._stop.is_set():
+            try:
+                chunk = self._read_until(b"\n", self.max_line)
+            except InstrumentError as e:
+                with self._cond:
+                    self._error = e
+                    self._cond.notify_all()
+                return
+            if chunk:
+                self._feed(chunk)
+            else:
+                self._stop.wait(0.002)  # a port with timeout 0 (replay) returns at once
+
+    def pump(self) -> None:
+        """Parse everything the port holds now (manual mode; the reader thread does this itself)."""
+        if self._thread is not None:
+            return
+        while True:
+            with io_errors(self.name):
+                waiting = self.port.in_waiting
+            if not waiting:
+                return
+            self._feed(self._read_until(b"\n", self.max_line))
+
+    def _feed(self, chunk: bytes) -> None:
+        now = time.monotonic()
+        with self._cond:
+            self._partial += chunk
+            while (i := self._partial.find(b"\n")) >= 0:
+                line = bytes(self._partial[: i + 1])
+                del self._partial[: i + 1]
+                frame = parse_frame(line, self._seq + 1, now)
+                if frame is None:
+                    self._note_garbage(line)
+                else:
+                    self._seq += 1
+                    self._frames.append(frame)
+                    self._garbage.clear()
+                    self._garbage_n = 0
+            if len(self._partial) > self.max_line:  # no LF in sight: drop it, resync on the next LF
+                self._note_garbage(bytes(self._partial))
+                self._partial.clear()
+            self._cond.notify_all()
+
+    def _note_garbage(self, data: bytes) -> None:
+        self._garbage_n += len(data)
+        self.bytes_skipped += len(data)
+        if len(self._garbage) < 32:
+            self._garbage += data[: 32 - len(self._garbage)]
+
+    # -- readings --------------------------------------------------------------------------------
+    def _wait_frame(self, after_seq: int, wall_s: float) -> None:
+        """Wait up to ``wall_s`` for a frame newer than ``after_seq`` (returns early on error)."""
+        if self._thread is None:
+            self.pump()
+            return
+        with self._cond:
+            self._cond.wait_for(lambda: self._seq > after_seq or self._error is not None, timeout=wall_s)
+
+    def latest(self) -> Frame:
+        """The newest frame; raises if the stream is dead, stale, garbled or overloaded."""
+        if self._seq == 0:
+            self._wait_frame(0, max(0.0, self._t_open + self.stale_s - time.monotonic()))
+        else:
+            self.pump()
+        with self._cond:
+            if self._error is not None:
+                raise self._error
+            frame = self._frames[-1] if self._frames else None
+            age = time.monotonic() - (frame.t_wall if frame else self._t_open)
+            if frame is None or age > self.stale_s:
+                if self._garbage_n:
+                    raise MalformedReply(
+                        self.name,
+                        f"no valid frame for {age:.2f} s, only {self._garbage_n} unparseable bytes such as {bytes(self._garbage)!r}",
+                    )
+                raise StaleStream(self.name, f"no frame for {age:.2f} s (limit {self.stale_s} s)")
+            if frame.status == "OL":
+                raise Overload(self.name, f"overload (rated {CAPACITY_N:g} N): {frame.raw!r}")
+            return frame
+
+    def force(self) -> ForceReading:
+        """Newest force (N) and whether the indicator calls it stable."""
+        f = self.latest()
+        return ForceReading(f.force_N, f.stable)
+
+    def _frames_after(self, seq: int) -> list[Frame]:
+        with self._cond:
+            return [f for f in self._frames if f.seq > seq]
+
+    def wait_stable(
+        self, target_N: float, tol_N: float, hold_s: float, timeout_s: float, clock: Clock, poll_s: float = 0.05
+    ) -> ForceReading:
+        """Wait until every frame for ``hold_s`` is stable and within ``tol_N`` of ``target_N``.
+
+        Times are seconds of ``clock`` (the rig's clock); raises ``InstrumentTimeout`` after ``timeout_s``
+        and whatever ``latest()`` raises (stale, overload, disconnect) at once.
+        """
+        t0 = clock.now()
+        since: float | None = None
+        seen = 0
+        while True:
+            newest = self.latest()
+            for f in self._frames_after(seen):  # judge every frame, not just the newest
+                ok = f.stable and abs(f.force_N - target_N) <= tol_N
+                since = (since if since is not None else clock.now()) if ok else None
+                seen = f.seq
+            now = clock.now()
+            if since is not None and now - since >= hold_s:
+                return ForceReading(newest.force_N, newest.stable)
+            if now - t0 >= timeout_s:
+                state = "stable" if newest.stable else "unstable"
+                raise InstrumentTimeout(
+                    self.name,
+                    f"force {newest.force_N:.3f} N ({state}) did not hold {target_N:.3f} ± {tol_N:.3f} N "
+                    f"for {hold_s:g} s within {timeout_s:g} s",
+                )
+            clock.sleep(poll_s)
+
+    # -- commands ----------------------------------------------------------------------------------
+    def _command(self, cmd: Command, confirmed: Callable[[Frame], bool], confirm_s: float | None) -> None:
+        self.pump()
+        seq0 = self._seq
+        self._write(cmd.request() + b"\r\n")
+        if confirm_s is None:
+            return
+        deadline = time.monotonic() + confirm_s
+        while True:
+            if any(confirmed(f) for f in self._frames_after(seq0)):
+                return
+            if self._error is not None:
+                raise self._error
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise InstrumentTimeout(self.name, f"{cmd.name} ({cmd.template}) not confirmed by the stream within {confirm_s:g} s")
+            self._wait_frame(self._seq, left)
+            if self._thread is None and not self._frames_after(seq0):
+                time.sleep(min(left, 0.01))
+
+    def zero(self, confirm_s: float | None = 1.0) -> None:
+        """Zero the gross reading; confirmed when a later frame reads within 2 counts of zero."""
+        self._command(self.zero_cmd, self._near_zero, confirm_s)
+
+    def tare(self, confirm_s: float | None = 1.0) -> None:
+        """Tare (net mode); confirmed when a later frame is net and within 2 counts of zero."""
+        self._command(self.tare_cmd, lambda f: f.kind == "NT" and self._near_zero(f), confirm_s)
+
+    @staticmethod
+    def _near_zero(f: Frame) -> bool:
+        return f.status != "OL" and abs(f.force_N) <= 2 * COUNT_KGF * G_N + 1e-9
+
+    def close(self) -> None:
+        """Stop the reader and close the port (the indicator drives nothing: no safe state to set)."""
+        self._stop.set()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=2.0)
+        super().close()
