@@ -11,6 +11,7 @@ from __future__ import annotations
 import logging
 import select
 import socket
+import time
 from contextlib import contextmanager
 from typing import Any, Iterator, Sequence
 
@@ -92,13 +93,18 @@ class ImpedanceAnalyzer:
     def _set_timeout(self, seconds: float) -> None:
         self._raw.timeout = int(max(seconds, 0.001) * 1000)  # pyvisa wants ms
 
-    def _peer_closed(self) -> bool:
-        """pyvisa-py reports a socket closed by the instrument as a timeout; look at the socket."""
+    def _socket(self) -> socket.socket | None:
+        """The TCP socket under a pyvisa-py SOCKET resource, if that is what we have."""
         try:
             sock = self._raw.visalib.sessions[self._raw.session].interface
         except Exception:
-            return False
-        if not isinstance(sock, socket.socket):
+            return None
+        return sock if isinstance(sock, socket.socket) else None
+
+    def _peer_closed(self) -> bool:
+        """pyvisa-py reports a socket closed by the instrument as a timeout; look at the socket."""
+        sock = self._socket()
+        if sock is None:
             return False
         try:
             readable, _, _ = select.select([sock], [], [], 0)
@@ -219,8 +225,7 @@ class ImpedanceAnalyzer:
         wait = self.sweep_timeout_s
         if wait is None:
             wait = self.timeout_s + 2.0 * estimate_sweep_s(self._freqs if self._freqs is not None else [])
-        self._send("*OPC?")
-        done = self._read("*OPC? (sweep)", timeout_s=wait)
+        done = self._wait_opc(wait)
         if done not in ("1", "+1"):
             raise MalformedReply(self.device, f"*OPC? answered {done[:60]!r}, expected 1")
         freqs = parse_floats(self.device, ":SENS1:FREQ:DATA?", self._ask(":SENS1:FREQ:DATA?"))
@@ -231,6 +236,19 @@ class ImpedanceAnalyzer:
             raise MalformedReply(self.device, f"{raw.size} data values for {freqs.size} points (want re,im pairs)")
         self.check_errors()
         return freqs, raw[0::2] + 1j * raw[1::2]
+
+    def _wait_opc(self, wait_s: float) -> str:
+        """``*OPC?`` with a long wait, read in short slices on a socket so a dropped link shows at once."""
+        self._send("*OPC?")
+        if self._socket() is None:
+            return self._read("*OPC? (sweep)", timeout_s=wait_s)
+        deadline = time.monotonic() + wait_s
+        while True:
+            try:
+                return self._read("*OPC? (sweep)", timeout_s=min(0.5, max(deadline - time.monotonic(), 0.001)))
+            except InstrumentTimeout:  # a slice ran out; _io already turned a closed socket into Disconnected
+                if time.monotonic() >= deadline:
+                    raise InstrumentTimeout(self.device, f"sweep not complete within {wait_s:g} s (*OPC?)") from None
 
     def spectrum(self, f_start_Hz: float, f_stop_Hz: float, points: int, ac_V: float,
                  bias_V: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
