@@ -76,6 +76,7 @@ class Mechanics:
     density: float  # kg/m^3 of the IPMC (Nafion + platinum)
     gamma: float  # viscoelastic coefficient of eq. 23 (dimensionless)
     alpha: float  # J/C, stress per charge density (eq. 15)
+    mu_v: float | None = None  # kg/m: fixed mass per length (Table 3 practice); None = rho A + m_a(omega) (Sader)
 
 
 @dataclass(frozen=True)

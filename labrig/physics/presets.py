@@ -57,7 +57,9 @@ def _paper() -> Preset:
         fluid=WATER_25C,
         line=_line_from_table1(0),
         clamp=law.clamp_at(3062e3),
-        mechanics=Mechanics(E=TABLE3["E_MPa"] * 1e6, density=rho, gamma=TABLE3["gamma"], alpha=TABLE3["alpha"]),
+        mechanics=Mechanics(
+            E=TABLE3["E_MPa"] * 1e6, density=rho, gamma=TABLE3["gamma"], alpha=TABLE3["alpha"], mu_v=TABLE3["mu_v"]
+        ),
         Kt_bar=law.kt_bar_at(3062e3),
         pressure=3062e3,
     )
@@ -74,7 +76,7 @@ def _seed001() -> Preset:
         fluid=AIR_25C,
         line=_line_from_table1(0, width_scale=geom.width / 0.004),
         clamp=law.clamp_at(3062e3),
-        mechanics=replace(paper.base.mechanics, density=2000.0),  # in air: no added mass to absorb
+        mechanics=replace(paper.base.mechanics, density=2000.0, mu_v=None),  # in air: rho A + tiny m_a(omega)
         Kt_bar=law.kt_bar_at(3062e3),
     )
     return Preset("seed001", base, law, 3062.0, HammersteinParams(), "seed 001: 20 mm free, 10 mm clamped, 0.2 x 5 mm, in air")

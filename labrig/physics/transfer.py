@@ -41,8 +41,10 @@ class ModalSet:
 
 
 def mu_v(omega: np.ndarray | float, sp: Specimen) -> np.ndarray:
-    """mu_v(omega) = rho A + m_a(omega) (eq. 24), kg/m."""
+    """mu_v(omega) = rho A + m_a(omega) (eq. 24), kg/m; the fixed ``mechanics.mu_v`` when one is given."""
     g = sp.geometry
+    if sp.mechanics.mu_v is not None:
+        return np.full(np.shape(omega), sp.mechanics.mu_v)
     return sp.mechanics.density * g.cross_section + hydro.added_mass(omega, g.width, sp.fluid)
 
 

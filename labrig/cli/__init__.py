@@ -1,0 +1,56 @@
+"""The ``labrig`` command line. Exit codes (DESIGN.md 6): 0 ok, 2 bad input, 3 instrument or safety fault, 1 other."""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from labrig import __version__
+from labrig.errors import BadInput, SafetyTrip
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="labrig")
+def app() -> None:
+    """Instrument control, acquisition, fitting and diagnosis for IPMC actuators."""
+
+
+def _register() -> None:
+    from labrig.cli import model
+
+    app.add_command(model.model)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: one clear line on stderr for bad input (exit 2) and instrument faults (exit 3)."""
+    _register()
+    try:
+        app.main(args=argv, prog_name="labrig", standalone_mode=False)
+        return 0
+    except click.exceptions.Exit as exc:
+        return exc.exit_code
+    except click.UsageError as exc:
+        where = f" {exc.ctx.command_path}" if exc.ctx else ""
+        click.echo(f"labrig{where[len(' labrig'):] if where.startswith(' labrig') else where}: error: {exc.format_message()}", err=True)
+        return 2
+    except click.Abort:
+        click.echo("labrig: aborted", err=True)
+        return 1
+    except BadInput as exc:
+        click.echo(f"labrig: error: {exc}", err=True)
+        return 2
+    except SafetyTrip as exc:
+        click.echo(f"labrig: safety trip: {exc}", err=True)
+        return 3
+    except Exception as exc:  # instrument faults carry their device name
+        from drivers.errors import InstrumentError
+
+        if isinstance(exc, InstrumentError):
+            click.echo(f"labrig: instrument fault: {exc}", err=True)
+            return 3
+        raise
+
+
+def entry() -> None:
+    sys.exit(main())
