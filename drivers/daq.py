@@ -1,0 +1,344 @@
+"""NI DAQ driver: hardware-timed drive (AO) and acquisition (AI) through ``nidaqmx`` only.
+
+The same code runs on a local NI-DAQmx device (``grpc_target=None``) or on a remote NI gRPC Device
+Server (``grpc_target="host:port"``), real or simulated; it cannot tell which.
+
+Wiring: ``drive_channel`` (AO) drives the strip; AI reads the drive back (``voltage_channel``), the
+current amplifier (``current_channel``, A = V x ``current_gain_A_per_V``) and the laser analog output
+(``displacement_channel``, m = V x ``displacement_m_per_V``).
+
+Trigger pattern (valid on any X-series card): the AO task is configured with a digital-edge start
+trigger on ``/<device>/ai/StartTrigger``, written and started first (it arms and waits); starting the
+AI task then starts both on the same sample clock edge, so sample k of the drive and of every input
+belong to the same instant.
+
+Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive.
+Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import uuid
+from contextlib import contextmanager
+from typing import Any, Iterator
+
+import grpc
+import nidaqmx
+import numpy as np
+from nidaqmx.constants import AcquisitionType, Edge
+from nidaqmx.errors import DaqError
+from nidaqmx.errors import RpcError as NiRpcError
+from nidaqmx.stream_readers import AnalogMultiChannelReader
+from nidaqmx.stream_writers import AnalogSingleChannelWriter
+
+from drivers.errors import (BufferOverflow, Disconnected, InstrumentError, InstrumentErrorReply,
+                            InstrumentTimeout)
+from drivers.transcript import CallReplayer, Transcript
+
+KEYS = ("t_s", "voltage_V", "current_A", "displacement_m")
+OVERFLOW_CODES = {-200279, -200010}  # samples no longer available, input FIFO overflow
+TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-until-done, operation timed out
+GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
+GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
+CHANNEL_OPTIONS = [
+    ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
+    ("grpc.max_send_message_length", -1),
+    ("grpc.use_local_subchannel_pool", 1),  # a fresh rig must not inherit another channel's reconnect backoff
+]
+
+
+def to_bytes(*arrays: np.ndarray) -> bytes:
+    """Arrays as one little-endian float64 byte string (the transcript payload)."""
+    return b"".join(np.asarray(a, dtype="<f8").tobytes() for a in arrays)
+
+
+def _digest(a: np.ndarray | None) -> str | None:
+    return None if a is None else hashlib.sha256(to_bytes(a)).hexdigest()
+
+
+class DaqRig:
+    """AO drive + 3 AI channels on one NI DAQ device, SI units in and out."""
+
+    def __init__(
+        self,
+        device: str = "SimDev1",
+        grpc_target: str | None = None,
+        drive_channel: str = "ao0",
+        current_channel: str = "ai1",
+        displacement_channel: str = "ai2",
+        voltage_channel: str = "ai0",
+        current_gain_A_per_V: float = 1e-3,
+        displacement_m_per_V: float = 1e-3,
+        ai_range_V: float = 10.0,
+        ao_range_V: float = 10.0,
+        transcript: Transcript | None = None,
+        name: str = "daq",
+        replay: CallReplayer | None = None,
+    ):
+        self.device, self.grpc_target, self.name = device, grpc_target, name
+        self.drive_channel = drive_channel
+        self.ai_channels = (voltage_channel, current_channel, displacement_channel)
+        self.current_gain_A_per_V, self.displacement_m_per_V = float(current_gain_A_per_V), float(displacement_m_per_V)
+        self.ai_range_V, self.ao_range_V = float(ai_range_V), float(ao_range_V)
+        self.transcript, self._replay = transcript, replay
+        self._channel: grpc.Channel | None = None
+        if grpc_target is not None and replay is None:
+            self._channel = grpc.insecure_channel(grpc_target, options=CHANNEL_OPTIONS)
+        self._tasks: list[nidaqmx.Task] = []
+        self._reader: AnalogMultiChannelReader | None = None
+        self._fs = 0.0
+        self._pos = 0  # samples per channel read since start_continuous
+        self._drive_live = False  # a timed AO task may be putting out non-zero volts
+        self._closed = False
+
+    @classmethod
+    def from_replay(cls, transcript: Transcript, device: str = "daq", **settings: Any) -> "DaqRig":
+        """A rig that answers from ``transcript``'s calls of ``device`` (the rig's ``name``), no hardware."""
+        return cls(name=device, replay=transcript.replay_calls(device), **settings)
+
+    # ------------------------------------------------------------------------------ plumbing
+    def _settings(self) -> dict[str, Any]:
+        return {"device": self.device, "drive": self.drive_channel, "ai": list(self.ai_channels),
+                "current_gain_A_per_V": self.current_gain_A_per_V, "displacement_m_per_V": self.displacement_m_per_V,
+                "ai_range_V": self.ai_range_V}
+
+    def _call(self, method: str, args: dict[str, Any], run: Any) -> bytes:
+        """Run ``run()`` (returns payload bytes) or answer from the replay; record the exchange."""
+        if self._replay is not None:
+            return self._replay.call(method, args)
+        payload = run()
+        if self.transcript is not None:
+            self.transcript.add(self.name, "call", payload=payload, method=method, args=args)
+        return payload
+
+    @contextmanager
+    def _errors(self, what: str) -> Iterator[None]:
+        """Turn nidaqmx and gRPC failures into the matching ``drivers.errors`` exception."""
+        try:
+            yield
+        except InstrumentError:
+            raise
+        except DaqError as e:
+            code, msg = e.error_code, f"{what}: {str(e).splitlines()[0]} (DAQmx {e.error_code})"
+            if code in OVERFLOW_CODES:
+                raise BufferOverflow(self.name, msg) from e
+            if code in TIMEOUT_CODES:
+                raise InstrumentTimeout(self.name, msg) from e
+            if code in GONE_CODES:
+                raise Disconnected(self.name, msg) from e
+            raise InstrumentErrorReply(self.name, msg, code=code) from e
+        except (NiRpcError, grpc.RpcError) as e:
+            rpc = e.rpc_code if isinstance(e, NiRpcError) else e.code()  # type: ignore[union-attr]
+            msg = f"{what}: gRPC {rpc}: {e}"
+            if rpc in GONE_RPC:
+                raise Disconnected(self.name, msg) from e
+            if rpc == grpc.StatusCode.DEADLINE_EXCEEDED:
+                raise InstrumentTimeout(self.name, msg) from e
+            raise InstrumentErrorReply(self.name, msg, code=str(rpc)) from e
+
+    def _new_task(self, kind: str) -> nidaqmx.Task:
+        if self._closed:
+            raise Disconnected(self.name, "the rig is closed")
+        tname = f"labrig-{kind}-{uuid.uuid4().hex[:10]}"  # session names are global on a gRPC server
+        if self._channel is None:
+            task = nidaqmx.Task(tname)
+        else:
+            opts = nidaqmx.GrpcSessionOptions(grpc_channel=self._channel, session_name=tname)
+            task = nidaqmx.Task(tname, grpc_options=opts)
+        self._tasks.append(task)
+        return task
+
+    def _phys(self, ch: str) -> str:
+        return f"{self.device}/{ch}"
+
+    def _release(self) -> None:
+        """Stop and clear every task (best effort: a dead server must not hide the caller's error)."""
+        tasks, self._tasks, self._reader = self._tasks, [], None
+        for task in tasks:
+            for step in (task.stop, task.close):
+                try:
+                    step()
+                except Exception:
+                    pass
+
+    def _setup(self, fs: float, mode: AcquisitionType, n: int, drive: np.ndarray | None,
+               timeout: float) -> nidaqmx.Task | None:
+        """AI (3 channels) and, if ``drive`` is given, AO armed on AI's start trigger; start both; return AO."""
+        ai = self._new_task("ai")
+        ai.ai_channels.add_ai_voltage_chan(", ".join(self._phys(c) for c in self.ai_channels),
+                                           min_val=-self.ai_range_V, max_val=self.ai_range_V)
+        ai.timing.cfg_samp_clk_timing(fs, sample_mode=mode, samps_per_chan=n)
+        ao = None
+        if drive is not None:
+            ao = self._new_task("ao")
+            ao.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
+                                               max_val=self.ao_range_V)
+            ao.timing.cfg_samp_clk_timing(fs, sample_mode=mode, samps_per_chan=len(drive) if mode == AcquisitionType.CONTINUOUS else n)
+            ao.triggers.start_trigger.cfg_dig_edge_start_trig(f"/{self.device}/ai/StartTrigger", Edge.RISING)
+            writer = AnalogSingleChannelWriter(ao.out_stream, auto_start=False)
+            writer.verify_array_shape = False
+            writer.write_many_sample(drive, timeout=timeout)
+            self._drive_live = True
+            ao.start()  # armed: waits for the AI start trigger
+        self._reader = AnalogMultiChannelReader(ai.in_stream)
+        self._reader.verify_array_shape = False  # we built the array; skip a query per read
+        ai.start()  # fires /<device>/ai/StartTrigger: AO and AI start on the same edge
+        return ao
+
+    def _scale(self, raw: np.ndarray, first: int) -> dict[str, np.ndarray]:
+        n = raw.shape[1]
+        return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
+                "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
+
+    def _check_drive(self, drive_V: Any) -> np.ndarray:
+        drive = np.ascontiguousarray(drive_V, dtype=float).ravel()
+        if drive.size < 2 or not np.all(np.isfinite(drive)):
+            raise ValueError("drive_V must hold at least 2 finite samples")
+        if np.max(np.abs(drive)) > self.ao_range_V:
+            raise ValueError(f"drive exceeds ±{self.ao_range_V} V")
+        return drive
+
+    @staticmethod
+    def _unpack(payload: bytes, n_arrays: int = 4) -> dict[str, np.ndarray]:
+        arr = np.frombuffer(payload, dtype="<f8").reshape(n_arrays, -1)
+        return {k: arr[i].copy() for i, k in enumerate(KEYS)}
+
+    # ------------------------------------------------------------------------------ public API
+    def run_finite(self, drive_V: np.ndarray, fs: float, timeout_s: float | None = None) -> dict[str, np.ndarray]:
+        """Put ``drive_V`` out at ``fs`` and record the 3 inputs over the same samples.
+
+        Returns SI arrays ``t_s`` (from the first sample), ``voltage_V``, ``current_A``, ``displacement_m``.
+        """
+        drive = self._check_drive(drive_V)
+        fs, n = float(fs), len(drive)
+        timeout = float(timeout_s) if timeout_s is not None else n / fs + 10.0
+        args = {"fs": fs, "n": n, "drive_sha256": _digest(drive), **self._settings()}
+
+        def run() -> bytes:
+            self._release()
+            try:
+                with self._errors("run_finite"):
+                    self._fs = fs
+                    ao = self._setup(fs, AcquisitionType.FINITE, n, drive, timeout)
+                    raw = np.zeros((3, n))
+                    assert self._reader is not None and ao is not None
+                    self._reader.read_many_sample(raw, n, timeout=timeout)
+                    ao.wait_until_done(timeout=timeout)
+            except BaseException:
+                self.abort()  # 0 V on the drive before the error goes up
+                raise
+            self._release()  # the output now holds the drive's last sample
+            out = self._scale(raw, 0)
+            return to_bytes(*(out[k] for k in KEYS))
+
+        return self._unpack(self._call("run_finite", args, run))
+
+    def start_continuous(self, fs: float, drive_block: np.ndarray | None = None, buffer_s: float = 10.0) -> None:
+        """Start continuous acquisition at ``fs``; AO regenerates ``drive_block`` (else the drive is left as is)."""
+        drive = None if drive_block is None else self._check_drive(drive_block)
+        fs = float(fs)
+        args = {"fs": fs, "drive_sha256": _digest(drive), "buffer_s": buffer_s, **self._settings()}
+
+        def run() -> bytes:
+            self._release()
+            try:
+                with self._errors("start_continuous"):
+                    self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, 10.0)
+            except BaseException:
+                self.abort()
+                raise
+            return b""
+
+        self._fs, self._pos = fs, 0
+        self._call("start_continuous", args, run)
+
+    def read_block(self, n: int, timeout_s: float = 10.0) -> dict[str, np.ndarray]:
+        """The next ``n`` samples per channel of the continuous acquisition (contiguous with the last block)."""
+        n = int(n)
+
+        def run() -> bytes:
+            if self._reader is None:
+                raise InstrumentErrorReply(self.name, "read_block: no continuous acquisition running")
+            raw = np.zeros((3, n))
+            try:
+                with self._errors("read_block"):
+                    self._reader.read_many_sample(raw, n, timeout=timeout_s)
+            except BaseException:
+                self.abort()
+                raise
+            out = self._scale(raw, self._pos)
+            return to_bytes(*(out[k] for k in KEYS))
+
+        out = self._unpack(self._call("read_block", {"n": n}, run))
+        self._pos += n
+        return out
+
+    def stop(self) -> None:
+        """End the continuous acquisition; a drive that was running is returned to 0 V."""
+        def run() -> bytes:
+            live = self._drive_live
+            self._release()
+            if live:
+                self._zero()
+            return b""
+
+        self._call("stop", {}, run)
+
+    def _zero(self) -> None:
+        """0 V on the drive through an on-demand AO task (timed tasks are released first: they reserve it)."""
+        self._release()
+        with self._errors("zero_output"):
+            task = self._new_task("zero")
+            try:
+                task.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
+                                                     max_val=self.ao_range_V)
+                AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=10.0)
+            finally:
+                self._release()
+        self._drive_live = False
+
+    def zero_output(self) -> None:
+        """Write 0 V to the drive now (stops anything running)."""
+        self._call("zero_output", {}, lambda: (self._zero(), b"")[1])
+
+    def abort(self) -> bool:
+        """Emergency stop: release everything and try to put 0 V out. Never raises; True if 0 V was confirmed."""
+        if self._replay is not None:
+            return True
+        try:
+            self._zero()
+            return True
+        except Exception:
+            self._release()
+            return False
+
+    def close(self) -> None:
+        """0 V on the drive, then release the tasks and the connection. Raises if 0 V could not be written."""
+        if self._closed:
+            return
+        try:
+            if self._replay is None or not self._replay.exhausted:
+                self.zero_output()
+        finally:
+            self._release()
+            self._closed = True
+            if self._channel is not None:
+                self._channel.close()
+
+    def __enter__(self) -> "DaqRig":
+        return self
+
+    def __exit__(self, exc_type: object, *rest: object) -> None:
+        if exc_type is None:
+            self.close()
+        else:  # do not mask the original error with a failure to zero
+            self.abort()
+            self._closed = True
+            if self._channel is not None:
+                self._channel.close()
+
+    def describe(self) -> str:
+        """One line for the session file: where and how the rig is wired."""
+        return json.dumps({"grpc_target": self.grpc_target, **self._settings()})

@@ -1,0 +1,308 @@
+"""A simulated NI gRPC Device Server for NI-DAQmx: the unmodified ``nidaqmx`` package talks to it.
+
+``SimDaq`` serves service ``nidaqmx_grpc.NiDAQmx`` (the stubs that ship in the nidaqmx wheel) on
+127.0.0.1, backed by ``mock_devices.daq_sim.SimDevice``. Errors travel as the real server sends them:
+gRPC status UNKNOWN with trailing metadata ``ni-error`` (the DAQmx code) and, for reads,
+``ni-samps-per-chan-read``; nidaqmx turns these into ``DaqError`` / ``DaqReadError``.
+
+    with SimDaq(bench) as sim:
+        task = nidaqmx.Task("t", grpc_options=nidaqmx.GrpcSessionOptions(
+            grpc_channel=grpc.insecure_channel(sim.address), session_name="t"))
+
+Faults: ``sim.inject("disconnect" | "timeout" | "overflow" | "error")``, ``sim.clear_fault()``.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import threading
+from concurrent import futures
+from typing import Any, Callable, Sequence
+
+import grpc
+import numpy as np
+from nidaqmx._stubs import nidaqmx_pb2 as pb
+from nidaqmx._stubs import nidaqmx_pb2_grpc as pb_grpc
+
+from mock_devices.bench_api import BenchView
+from mock_devices.daq_sim import ERR_MESSAGES, DaqmxError, SimDevice
+
+DRIVER_VERSION = (25, 5, 0)  # NI-DAQmx version the server claims (>= 24.5: reads use DefaultNumberOfSamplesToRead)
+GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
+FAULTS = ("disconnect", "timeout", "overflow", "error")
+# the one-shot "error" skips these: nidaqmx swallows failures of the version query and of error lookups
+NO_FAULT_PREFIXES = ("GetErrorString", "GetExtendedErrorInfo", "GetSystemInfoAttribute")
+AI_VOLTAGE, CHAN_AI, CHAN_AO, DO_NOT_OVERWRITE = 10322, 10100, 10102, 10159
+
+
+def _attributes(dev: SimDevice) -> dict[tuple[str, int], Callable[..., Any]]:
+    """(scope, attribute id) -> getter(task or device name, channel). Ids are nidaqmx's."""
+    t = dev.task
+    names = lambda n: ", ".join(c.name for c in t(n).chans)  # noqa: E731
+    return {
+        ("SystemInfo", 0x1272): lambda *_: DRIVER_VERSION[0],
+        ("SystemInfo", 0x1923): lambda *_: DRIVER_VERSION[1],
+        ("SystemInfo", 0x2F22): lambda *_: DRIVER_VERSION[2],
+        ("SystemInfo", 0x193B): lambda *_: dev.name,  # device names
+        ("Device", 0x0631): lambda *_: dev.product_type,
+        ("Device", 0x0632): lambda *_: 0x1D1E_6361,  # serial number
+        ("Device", 0x22CA): lambda *_: True,  # is simulated
+        ("Device", 0x231E): lambda *_: ", ".join(f"{dev.name}/{p}" for p in dev.ai_phys),
+        ("Device", 0x231F): lambda *_: ", ".join(f"{dev.name}/{p}" for p in dev.ao_phys),
+        ("Task", 0x1276): lambda n, _: t(n).name,
+        ("Task", 0x1273): lambda n, _: names(n),
+        ("Task", 0x2181): lambda n, _: len(t(n).chans),
+        ("Task", 0x230E): lambda n, _: dev.name,
+        ("Task", 0x29BA): lambda n, _: 1,
+        ("Task", 0x1274): lambda n, _: dev.is_done(n),
+        ("Read", 0x217B): lambda n, _: len(t(n).chans),
+        ("Read", 0x1223): lambda n, _: dev.available(t(n)),
+        ("Read", 0x31E8): lambda n, _: (dev.available(t(n)) if t(n).mode != 10178 or t(n).read_all_avail
+                                        else t(n).samps - t(n).read_pos),
+        ("Read", 0x1823): lambda n, _: names(n),
+        ("Read", 0x1215): lambda n, _: t(n).read_all_avail,
+        ("Read", 0x1221): lambda n, _: t(n).read_pos,
+        ("Read", 0x192A): lambda n, _: dev.acquired(t(n)),
+        ("Read", 0x1211): lambda n, _: DO_NOT_OVERWRITE,
+        ("Write", 0x217E): lambda n, _: len(t(n).chans),
+        ("Write", 0x1460): lambda n, _: t(n).samps,
+        ("Timing", 0x1300): lambda n, _: t(n).mode,
+        ("Timing", 0x1310): lambda n, _: t(n).samps,
+        ("Timing", 0x1344): lambda n, _: t(n).rate or 0.0,
+        ("Buffer", 0x186C): lambda n, _: t(n).buf_size or 0,
+        ("Buffer", 0x186D): lambda n, _: 0 if t(n).ao_buf is None else t(n).ao_buf.shape[1],
+        ("Chan", 0x187F): lambda n, c: CHAN_AI if t(n).kind == "ai" else CHAN_AO,
+        ("Chan", 0x0695): lambda n, c: AI_VOLTAGE,
+        ("Chan", 0x1108): lambda n, c: AI_VOLTAGE,
+    }
+
+
+def _setters(dev: SimDevice) -> dict[tuple[str, int], Callable[[str, Any], None]]:
+    def read_all(n: str, v: Any) -> None:
+        dev.task(n).read_all_avail = bool(v)
+
+    def in_buf(n: str, v: Any) -> None:
+        dev.task(n).buf_size = int(v)
+
+    return {("Read", 0x1215): read_all, ("Buffer", 0x186C): in_buf}
+
+
+class DaqServicer(pb_grpc.NiDAQmxServicer):
+    """The RPCs an nidaqmx Task uses for AI/AO voltage, sample clock timing, start triggers, read and write."""
+
+    def __init__(self, device: SimDevice):
+        self.dev = device
+        self._get = _attributes(device)
+        self._set = _setters(device)
+
+    # -------------------------------------------------------------------- session and channels
+    def CreateTask(self, req, ctx):
+        name, new = self.dev.create_task(req.session_name)
+        resp = pb.CreateTaskResponse(new_session_initialized=new)
+        resp.task.name = name
+        return resp
+
+    def ClearTask(self, req, ctx):
+        self.dev.clear_task(req.task.name)
+        return pb.ClearTaskResponse()
+
+    def CreateAIVoltageChan(self, req, ctx):
+        self.dev.add_channels(req.task.name, "ai", req.physical_channel, req.name_to_assign_to_channel,
+                              req.min_val, req.max_val)
+        return pb.CreateAIVoltageChanResponse()
+
+    def CreateAOVoltageChan(self, req, ctx):
+        self.dev.add_channels(req.task.name, "ao", req.physical_channel, req.name_to_assign_to_channel,
+                              req.min_val, req.max_val)
+        return pb.CreateAOVoltageChanResponse()
+
+    def CfgSampClkTiming(self, req, ctx):
+        self.dev.cfg_timing(req.task.name, req.rate, req.sample_mode_raw or req.sample_mode, req.samps_per_chan)
+        return pb.CfgSampClkTimingResponse()
+
+    def CfgDigEdgeStartTrig(self, req, ctx):
+        self.dev.cfg_start_trigger(req.task.name, req.trigger_source)
+        return pb.CfgDigEdgeStartTrigResponse()
+
+    def DisableStartTrig(self, req, ctx):
+        self.dev.cfg_start_trigger(req.task.name, None)
+        return pb.DisableStartTrigResponse()
+
+    # -------------------------------------------------------------------- run control
+    def StartTask(self, req, ctx):
+        self.dev.start(req.task.name)
+        return pb.StartTaskResponse()
+
+    def StopTask(self, req, ctx):
+        self.dev.stop(req.task.name)
+        return pb.StopTaskResponse()
+
+    def TaskControl(self, req, ctx):
+        action = req.action_raw or req.action
+        if action == 0:
+            self.dev.start(req.task.name)
+        elif action in (1, 6):  # stop, abort
+            self.dev.stop(req.task.name)
+        return pb.TaskControlResponse()
+
+    def IsTaskDone(self, req, ctx):
+        return pb.IsTaskDoneResponse(is_task_done=self.dev.is_done(req.task.name))
+
+    def WaitUntilTaskDone(self, req, ctx):
+        self.dev.wait_until_done(req.task.name, req.time_to_wait, ctx.is_active)
+        return pb.WaitUntilTaskDoneResponse()
+
+    # -------------------------------------------------------------------- data
+    def WriteAnalogF64(self, req, ctx):
+        flat = np.fromiter(req.write_array, dtype=float, count=len(req.write_array))
+        n = self.dev.write(req.task.name, flat, req.num_samps_per_chan, req.auto_start,
+                           req.data_layout_raw or req.data_layout)
+        return pb.WriteAnalogF64Response(samps_per_chan_written=n)
+
+    def WriteAnalogScalarF64(self, req, ctx):
+        self.dev.write(req.task.name, np.array([req.value]), 1, req.auto_start, 0)
+        return pb.WriteAnalogScalarF64Response()
+
+    def ReadAnalogF64(self, req, ctx):
+        data = self.dev.read(req.task.name, req.num_samps_per_chan, req.timeout, ctx.is_active)
+        n = data.shape[1]
+        if data.size > req.array_size_in_samps:
+            raise DaqmxError(-200229, "Buffer is too small to fit read data.", samps_per_chan_read=0)
+        flat = data.T.ravel() if (req.fill_mode_raw or req.fill_mode) == 1 else data.ravel()
+        # a list builds the repeated field faster than iterating a numpy array
+        return pb.ReadAnalogF64Response(read_array=flat.tolist(), samps_per_chan_read=n)
+
+    def GetErrorString(self, req, ctx):
+        return pb.GetErrorStringResponse(error_string=ERR_MESSAGES.get(req.error_code, f"DAQmx error {req.error_code}"))
+
+    def GetExtendedErrorInfo(self, req, ctx):
+        return pb.GetExtendedErrorInfoResponse(error_string="")
+
+
+_ATTR_RPC = re.compile(r"^(Get|Set)(SystemInfo|Device|Task|Read|Write|Timing|Buffer|Chan)Attribute"
+                       r"(Bool|Double|Int32|UInt32|UInt64|String)$")
+
+
+def _attribute_rpc(rpc: str) -> Callable[..., Any]:
+    """Build one Get/Set…Attribute… handler from the shared tables (one code path for ~40 RPCs)."""
+    verb, scope, kind = _ATTR_RPC.match(rpc).groups()  # type: ignore[union-attr]
+    resp_type = getattr(pb, f"{rpc}Response")
+
+    def handler(self: DaqServicer, req: Any, ctx: Any) -> Any:
+        attr = req.attribute_raw or req.attribute
+        owner = req.device_name if scope == "Device" else "" if scope == "SystemInfo" else req.task.name
+        table = self._get if verb == "Get" else self._set
+        fn = table.get((scope, attr))
+        if fn is None:
+            raise DaqmxError(-200452, f"Property 0x{attr:X} is not supported by the simulated device.")
+        if verb == "Set":
+            fn(owner, req.value_raw if kind == "Int32" else req.value)
+            return resp_type()
+        value = fn(owner, getattr(req, "channel", ""))
+        return resp_type(**{"value_raw" if kind == "Int32" else "value": value})
+
+    handler.__name__ = rpc
+    return handler
+
+
+for _rpc in pb.DESCRIPTOR.services_by_name["NiDAQmx"].methods_by_name:
+    if _ATTR_RPC.match(_rpc):
+        setattr(DaqServicer, _rpc, _attribute_rpc(_rpc))
+
+
+def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
+    """Report ``DaqmxError`` the way NI's server does; apply the one-shot injected error first."""
+
+    @functools.wraps(fn)
+    def call(req: Any, ctx: grpc.ServicerContext) -> Any:
+        try:
+            if not fn.__name__.startswith(NO_FAULT_PREFIXES):
+                dev.check_call_fault()
+            return fn(req, ctx)
+        except DaqmxError as e:
+            md = [("ni-error", str(e.code))]
+            if e.samps_per_chan_read is not None:
+                md.append(("ni-samps-per-chan-read", str(e.samps_per_chan_read)))
+            ctx.set_trailing_metadata(tuple(md))
+            ctx.abort(grpc.StatusCode.UNKNOWN, e.message)
+
+    return call
+
+
+class _GuardedServicer(DaqServicer):
+    def __getattribute__(self, name: str) -> Any:
+        attr = super().__getattribute__(name)
+        if name[:1].isupper() and callable(attr):
+            return _guarded(super().__getattribute__("dev"), attr)
+        return attr
+
+
+class SimDaq:
+    """The simulated DAQ on a loopback gRPC server. ``address`` is "127.0.0.1:PORT" once started."""
+
+    def __init__(self, bench: BenchView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
+                 interceptors: Sequence[grpc.ServerInterceptor] = (), max_workers: int = 16, **device_kw: Any):
+        self.device = SimDevice(bench, device, product_type, **device_kw)
+        self._port, self._interceptors, self._workers = port, tuple(interceptors), max_workers
+        self._server: grpc.Server | None = None
+        self._lock = threading.Lock()
+        self.fault: str | None = None
+
+    def start(self) -> "SimDaq":
+        with self._lock:
+            if self._server is not None:
+                return self
+            server = grpc.server(futures.ThreadPoolExecutor(self._workers), interceptors=self._interceptors,
+                                 options=GRPC_OPTIONS)
+            pb_grpc.add_NiDAQmxServicer_to_server(_GuardedServicer(self.device), server)
+            port = server.add_insecure_port(f"127.0.0.1:{self._port}")
+            if port == 0:
+                raise OSError(f"cannot listen on 127.0.0.1:{self._port}")
+            self._port = port  # a restart after "disconnect" comes back on the same port
+            server.start()
+            self._server = server
+        return self
+
+    def stop(self, grace_s: float | None = 0.5) -> None:
+        with self._lock:
+            server, self._server = self._server, None
+        if server is not None:
+            self.device.clear_all()
+            server.stop(grace_s).wait()
+
+    @property
+    def address(self) -> str:
+        return f"127.0.0.1:{self._port}"
+
+    @property
+    def running(self) -> bool:
+        return self._server is not None
+
+    def inject(self, fault: str, code: int | None = None) -> None:
+        """Make the device misbehave: one of ``FAULTS``. ``code`` picks the DAQmx status for ``"error"``."""
+        if fault not in FAULTS:
+            raise ValueError(f"unknown fault {fault!r}; expected one of {FAULTS}")
+        self.fault = fault
+        if fault == "disconnect":
+            self.stop(grace_s=None)  # abrupt: in-flight calls are cancelled
+        else:
+            self.device.inject(fault, code)
+
+    def clear_fault(self) -> None:
+        """Undo the fault; after ``"disconnect"`` the server comes back on the same address."""
+        self.fault = None
+        self.device.clear_fault()
+        if self._server is None:
+            self.start()
+
+    def ao_output_V(self, channel: str = "ao0") -> float:
+        """What the AO channel puts out right now (V)."""
+        with self.device._lock:
+            return float(self.device.ao_values(channel, np.array([self.device.bench.clock.now()]))[0])
+
+    def __enter__(self) -> "SimDaq":
+        return self.start()
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()

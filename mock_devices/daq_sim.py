@@ -1,0 +1,438 @@
+"""Simulated multifunction DAQ (an NI X-series card): tasks, hardware timing, triggers, buffers.
+
+The device model behind ``mock_devices.daq_grpc``: it knows DAQmx semantics (task states, finite and
+continuous sample clocks, digital-edge start triggers, the input buffer and its overflow) but nothing
+of gRPC. The analog world comes from a bench (``mock_devices.bench_api.BenchView``): when an AI task
+runs, the device asks ``bench.run_record`` for each block of samples, feeding it what AO puts out at
+those instants, and turns volts, amps and metres into AI voltages.
+
+Channel wiring: ``ao0`` drives the strip; ``ai0`` reads the drive back, ``ai1`` the current amplifier
+(current / gain A/V), ``ai2`` the laser analog output (displacement / m-per-V); other AI inputs read noise.
+Time is simulated seconds on ``bench.clock``; read and wait timeouts are wall seconds, as on a real server.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+from scipy.signal import lfilter
+
+from mock_devices.bench_api import BenchView
+
+# DAQmx enum values (nidaqmx.constants) and error codes (nidaqmx.error_codes.DAQmxErrors)
+FINITE, CONTINUOUS = 10178, 10123
+FILL_BY_SCAN = 1
+ERR_MESSAGES: dict[int, str] = {
+    -200279: "Attempted to read samples that are no longer available. The requested sample was previously "
+    "available, but has since been overwritten.",
+    -200284: "Some or all of the samples requested have not yet been acquired.",
+    -200278: "Attempted to read a sample beyond the final sample acquired.",
+    -200560: "Wait Until Done did not indicate that the task was done within the specified timeout.",
+    -200088: "Task specified is invalid or does not exist.",
+    -200170: "Physical channel specified does not exist on this device.",
+    -200220: "Device identifier is invalid.",
+    -200452: "Specified property is not supported by the device or is not applicable to the task.",
+    -200462: "Generation cannot be started, because the output buffer is empty.",
+    -200459: "Write cannot be performed because this task does not contain any output channels.",
+    -200561: "Attempted writing analog data that is too large or too small.",
+    -200479: "Specified operation cannot be performed while the task is running.",
+    -50103: "The specified resource is reserved. The operation could not be completed as specified.",
+    -200265: "An attempt has been made to use an invalid trigger source.",
+    -201003: "Device cannot be accessed. Possible causes: device is no longer present in the system.",
+}
+OVERFLOW, NOT_YET, BEYOND_END, WAIT_TIMEOUT = -200279, -200284, -200278, -200560
+AI_RANGES_V = (0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0)  # X-series input ranges (±)
+
+
+class DaqmxError(Exception):
+    """A DAQmx status code the server reports (negative = error)."""
+
+    def __init__(self, code: int, message: str | None = None, samps_per_chan_read: int | None = None):
+        self.code = code
+        self.message = message or ERR_MESSAGES.get(code, f"DAQmx error {code}")
+        self.samps_per_chan_read = samps_per_chan_read
+        super().__init__(f"{code}: {self.message}")
+
+
+@dataclass
+class Chan:
+    name: str  # virtual channel name (the physical name unless one was assigned)
+    phys: str  # "ai0", "ao0", ...
+    lo: float
+    hi: float
+
+
+@dataclass
+class Task:
+    name: str
+    kind: str = ""  # "ai" | "ao" once a channel is added
+    chans: list[Chan] = field(default_factory=list)
+    rate: float | None = None  # None = on-demand timing
+    mode: int = FINITE
+    samps: int = 1000
+    trigger: str | None = None  # start trigger terminal, e.g. "/SimDev1/ai/StartTrigger"
+    state: str = "idle"  # idle | armed | running
+    t0: float = 0.0  # simulated start time
+    ao_buf: np.ndarray | None = None  # (chans, n) AO samples
+    buf_size: int | None = None  # input buffer set by the client
+    read_all_avail: bool = False
+    read_pos: int = 0
+    gen_pos: int = 0
+    pending: deque = field(default_factory=deque)  # generated AI blocks not yet read
+    sticky_error: int | None = None
+
+    def n_total(self) -> int | None:
+        return self.samps if self.mode == FINITE else None
+
+
+def _default_input_buffer(rate: float) -> int:
+    """DAQmx's default continuous input buffer for a sample rate."""
+    for top, size in ((100.0, 1_000), (10_000.0, 10_000), (1_000_000.0, 100_000)):
+        if rate <= top:
+            return size
+    return 1_000_000
+
+
+class StandInBench:
+    """A tiny linear bench for tests and benchmarks (not the world): R-only strip, first-order bending.
+
+    current = V / R; displacement = k·V through a first-order lag of time constant ``tau_s``
+    (exact discretisation, state carried across contiguous records).
+    """
+
+    def __init__(self, clock: Any, R_ohm: float = 100.0, tau_s: float = 0.05, k_m_per_V: float = 1e-3):
+        self.clock, self.R_ohm, self.tau_s, self.k_m_per_V = clock, R_ohm, tau_s, k_m_per_V
+        self._y = 0.0
+        self.records: list[tuple[float, float, int]] = []  # (t0, fs, n) of each call
+
+    def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
+        v = np.asarray(drive_V, dtype=float)
+        self.records.append((t0, fs, len(v)))
+        a = np.exp(-1.0 / (fs * self.tau_s))
+        y, zf = lfilter([1.0 - a], [1.0, -a], self.k_m_per_V * v, zi=[a * self._y])
+        self._y = float(y[-1]) if len(y) else self._y
+        return {"voltage_V": v.copy(), "current_A": v / self.R_ohm, "displacement_m": y}
+
+
+class SimDevice:
+    """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting."""
+
+    def __init__(
+        self,
+        bench: BenchView,
+        name: str = "SimDev1",
+        product_type: str = "PXIe-6361",
+        drive_channel: str = "ao0",
+        current_gain_A_per_V: float = 1e-3,
+        displacement_m_per_V: float = 1e-3,
+        noise_V: float = 1e-4,
+        seed: int | None = 0,
+        n_ai: int = 16,
+        n_ao: int = 2,
+    ):
+        self.bench, self.name, self.product_type = bench, name, product_type
+        self.drive_channel = drive_channel
+        self.gain_A_per_V, self.m_per_V, self.noise_V = current_gain_A_per_V, displacement_m_per_V, noise_V
+        self.ai_phys = [f"ai{i}" for i in range(n_ai)]
+        self.ao_phys = [f"ao{i}" for i in range(n_ao)]
+        self.ao_level: dict[str, float] = {p: 0.0 for p in self.ao_phys}  # static output when no task drives
+        self.tasks: dict[str, Task] = {}
+        self.fault: str | None = None
+        self.fault_code = -50103
+        self._rng = np.random.default_rng(seed)
+        self._lock = threading.RLock()
+        self._n_unnamed = 0
+
+    # ---------------------------------------------------------------------------------- faults
+    def inject(self, fault: str, code: int | None = None) -> None:
+        """``"timeout"`` (reads/waits never complete), ``"overflow"`` (next read), ``"error"`` (next call)."""
+        if fault not in ("timeout", "overflow", "error"):
+            raise ValueError(f"unknown device fault {fault!r}")
+        with self._lock:
+            self.fault = fault
+            if code is not None:
+                self.fault_code = code
+
+    def clear_fault(self) -> None:
+        with self._lock:
+            self.fault = None
+
+    def check_call_fault(self) -> None:
+        """Raise the injected one-shot ``"error"`` on whichever call comes next."""
+        with self._lock:
+            if self.fault == "error":
+                self.fault = None
+                raise DaqmxError(self.fault_code)
+
+    # ---------------------------------------------------------------------------------- tasks
+    def create_task(self, name: str) -> tuple[str, bool]:
+        with self._lock:
+            if not name:
+                self._n_unnamed += 1
+                name = f"_unnamedTask<{self._n_unnamed}>"
+            if name in self.tasks:  # the server attaches to an existing session of that name
+                return name, False
+            self.tasks[name] = Task(name)
+            return name, True
+
+    def task(self, name: str) -> Task:
+        t = self.tasks.get(name)
+        if t is None:
+            raise DaqmxError(-200088)
+        return t
+
+    def clear_task(self, name: str) -> None:
+        with self._lock:
+            self.stop(name)
+            del self.tasks[name]
+
+    def clear_all(self) -> None:
+        """What a dying server process does: every task is cleared, outputs hold their last value."""
+        with self._lock:
+            for name in list(self.tasks):
+                self.clear_task(name)
+
+    def _parse_phys(self, spec: str, kind: str) -> list[str]:
+        out: list[str] = []
+        for part in (p.strip().lstrip("/") for p in spec.split(",") if p.strip()):
+            dev, _, chans = part.partition("/")
+            if dev != self.name:
+                raise DaqmxError(-200220, f"Device identifier is invalid: {dev!r}")
+            lo, _, hi = chans.partition(":")
+            if not lo.startswith(kind):
+                raise DaqmxError(-200170, f"Physical channel does not exist: {part!r}")
+            try:
+                a = int(lo[len(kind):])
+                b = int(hi[len(kind):] if hi.startswith(kind) else hi) if hi else a
+            except ValueError:
+                raise DaqmxError(-200170, f"Physical channel does not exist: {part!r}") from None
+            names = [f"{kind}{i}" for i in range(a, b + (1 if b >= a else -1), 1 if b >= a else -1)]
+            valid = self.ai_phys if kind == "ai" else self.ao_phys
+            if any(n not in valid for n in names):
+                raise DaqmxError(-200170, f"Physical channel does not exist: {part!r}")
+            out += names
+        return out
+
+    def add_channels(self, name: str, kind: str, spec: str, assigned: str, lo: float, hi: float) -> None:
+        with self._lock:
+            t = self.task(name)
+            if t.kind and t.kind != kind:
+                raise DaqmxError(-200452, "A task holds channels of one type only.")
+            phys = self._parse_phys(spec, kind)
+            names = [assigned] if assigned and len(phys) == 1 else [
+                f"{assigned}{i}" if assigned else f"{self.name}/{p}" for i, p in enumerate(phys)]
+            t.kind = kind
+            t.chans += [Chan(n, p, lo, hi) for n, p in zip(names, phys)]
+
+    def cfg_timing(self, name: str, rate: float, mode: int, samps: int) -> None:
+        with self._lock:
+            t = self.task(name)
+            if t.state != "idle":
+                raise DaqmxError(-200479)
+            if not rate > 0 or samps < 1 or mode not in (FINITE, CONTINUOUS):
+                raise DaqmxError(-200452, "Invalid sample clock settings.")
+            t.rate, t.mode, t.samps = float(rate), mode, int(samps)
+
+    def cfg_start_trigger(self, name: str, source: str | None) -> None:
+        with self._lock:
+            t = self.task(name)
+            if source is not None:
+                dev, _, term = source.strip("/").partition("/")
+                if dev != self.name or term not in ("ai/StartTrigger", "ao/StartTrigger"):
+                    raise DaqmxError(-200265, f"Invalid trigger source: {source!r}")
+                source = f"/{dev}/{term}"
+            t.trigger = source
+
+    # ---------------------------------------------------------------------------------- output
+    def write(self, name: str, flat: np.ndarray, n: int, auto_start: bool, layout: int) -> int:
+        with self._lock:
+            t = self.task(name)
+            if t.kind != "ao":
+                raise DaqmxError(-200459)
+            nch = len(t.chans)
+            data = np.asarray(flat, dtype=float)[: n * nch]
+            data = data.reshape(n, nch).T if layout == FILL_BY_SCAN else data.reshape(nch, n)
+            for c, row in zip(t.chans, data):
+                if row.size and (row.min() < c.lo - 1e-9 or row.max() > c.hi + 1e-9):
+                    raise DaqmxError(-200561)
+            if t.rate is None:  # on-demand: the output changes now
+                self._check_reserved(t)
+                for c, row in zip(t.chans, data):
+                    self.ao_level[c.phys] = float(row[-1])
+                t.state = "running"
+                return n
+            t.ao_buf = data.copy()
+            if auto_start and t.state == "idle":
+                self.start(name)
+            return n
+
+    def ao_values(self, phys: str, times: np.ndarray) -> np.ndarray:
+        """What AO channel ``phys`` puts out at simulated ``times`` (hold, regenerate, finite end)."""
+        out = np.full(len(times), self.ao_level.get(phys, 0.0))
+        for t in self.tasks.values():
+            if t.kind != "ao" or t.state != "running" or t.rate is None or t.ao_buf is None:
+                continue
+            for j, c in enumerate(t.chans):
+                if c.phys != phys:
+                    continue
+                buf = t.ao_buf[j]
+                k = np.floor((times - t.t0) * t.rate + 1e-6).astype(np.int64)
+                m = k >= 0
+                kk = k[m] if t.mode == CONTINUOUS else np.minimum(k[m], t.samps - 1)
+                out[m] = buf[kk % len(buf)]
+        return out
+
+    # ---------------------------------------------------------------------------------- control
+    def _check_reserved(self, t: Task) -> None:
+        mine = {c.phys for c in t.chans}
+        for o in self.tasks.values():
+            if o is not t and o.state != "idle" and mine & {c.phys for c in o.chans}:
+                if o.rate is None and t.rate is None:
+                    continue  # on-demand writers share a channel, as in DAQmx
+                raise DaqmxError(-50103, f"The specified resource is reserved by task {o.name!r}.")
+
+    def start(self, name: str) -> None:
+        with self._lock:
+            t = self.task(name)
+            if t.state != "idle":
+                raise DaqmxError(-200479)
+            self._check_reserved(t)
+            if t.kind == "ao" and t.rate is not None and t.ao_buf is None:
+                raise DaqmxError(-200462)
+            t.read_pos = t.gen_pos = 0
+            t.pending.clear()
+            t.sticky_error = None
+            if t.trigger:
+                t.state = "armed"  # waits for the edge of the other task's start trigger
+            else:
+                self._begin(t, self.bench.clock.now())
+
+    def _begin(self, t: Task, t0: float) -> None:
+        t.state, t.t0 = "running", t0
+        if t.kind == "ai":
+            t.buf_size = t.buf_size or (t.samps if t.mode == FINITE else max(t.samps, _default_input_buffer(t.rate or 1.0)))
+        term = f"/{self.name}/{t.kind}/StartTrigger"
+        for o in self.tasks.values():
+            if o.state == "armed" and o.trigger == term:
+                self._begin(o, t0)
+
+    def stop(self, name: str) -> None:
+        with self._lock:
+            t = self.task(name)
+            if t.kind == "ao" and t.state == "running" and t.rate is not None:
+                now = np.array([self.bench.clock.now()])
+                for c in t.chans:  # the output holds what it was putting out when stopped
+                    self.ao_level[c.phys] = float(self.ao_values(c.phys, now)[0])
+            t.state = "idle"
+            t.pending.clear()
+
+    # ---------------------------------------------------------------------------------- input
+    def acquired(self, t: Task) -> int:
+        """Samples per channel the hardware has converted by now."""
+        if t.state != "running" or t.rate is None:
+            return t.read_pos
+        n = int(max(0.0, (self.bench.clock.now() - t.t0) * t.rate))
+        total = t.n_total()
+        return n if total is None else min(n, total)
+
+    def available(self, t: Task) -> int:
+        return max(0, self.acquired(t) - t.read_pos)
+
+    def _generate(self, t: Task, upto: int) -> None:
+        """Ask the bench for samples [gen_pos, upto), in blocks large enough to keep the bench calls few."""
+        total = t.n_total()
+        rate = float(t.rate or 1.0)
+        while t.gen_pos < upto:
+            k = max(upto - t.gen_pos, min(int(rate * 0.05) + 1, (t.buf_size or upto) // 4))
+            if total is not None:
+                k = min(k, total - t.gen_pos)
+            idx = t.gen_pos + np.arange(k)
+            times = t.t0 + idx / rate
+            drive = self.ao_values(self.drive_channel, times)
+            rec = self.bench.run_record(float(times[0]), rate, drive)
+            sig = {"ai0": rec["voltage_V"], "ai1": np.asarray(rec["current_A"]) / self.gain_A_per_V,
+                   "ai2": np.asarray(rec["displacement_m"]) / self.m_per_V}
+            block = np.empty((len(t.chans), k))
+            for i, c in enumerate(t.chans):
+                block[i] = sig.get(c.phys, 0.0)
+                rng = next((r for r in AI_RANGES_V if r >= max(abs(c.lo), abs(c.hi))), AI_RANGES_V[-1])
+                lsb = 2.0 * rng / 65536.0  # 16-bit ADC over the selected range
+                if self.noise_V > 0:
+                    block[i] += self._rng.normal(0.0, self.noise_V, k)
+                np.clip(np.round(block[i] / lsb) * lsb, -rng, rng - lsb, out=block[i])
+            t.pending.append(block)
+            t.gen_pos += k
+
+    def _take(self, t: Task, n: int) -> np.ndarray:
+        self._generate(t, t.read_pos + n)
+        parts, need = [], n
+        while need > 0:
+            blk = t.pending[0]
+            if blk.shape[1] <= need:
+                parts.append(t.pending.popleft())
+                need -= blk.shape[1]
+            else:
+                parts.append(blk[:, :need])
+                t.pending[0] = blk[:, need:]
+                need = 0
+        t.read_pos += n
+        if not parts:
+            return np.empty((len(t.chans), 0))
+        return parts[0] if len(parts) == 1 else np.concatenate(parts, axis=1)
+
+    def read(self, name: str, n: int, timeout_s: float, alive: Callable[[], bool] = lambda: True) -> np.ndarray:
+        """Read ``n`` samples per channel (``-1``: all available); returns (chans, n). Blocks up to ``timeout_s``."""
+        deadline = None if timeout_s < 0 else time.monotonic() + timeout_s
+        while True:
+            with self._lock:
+                t = self.task(name)
+                if t.kind != "ai":
+                    raise DaqmxError(-200452, "Read cannot be performed: the task has no input channels.")
+                if self.fault == "overflow":
+                    self.fault = None
+                    raise DaqmxError(OVERFLOW, samps_per_chan_read=0)
+                if t.state == "idle":
+                    self.start(name)  # DAQmx Read starts an idle task implicitly
+                if t.sticky_error is not None:
+                    raise DaqmxError(t.sticky_error, samps_per_chan_read=0)
+                acq, total = self.acquired(t), t.n_total()
+                stalled = self.fault == "timeout"  # as if the sample clock stopped: nothing new, no overflow
+                if not stalled and total is None and t.buf_size is not None and acq - t.read_pos > t.buf_size:
+                    t.sticky_error = OVERFLOW  # the hardware stopped: unread samples would be overwritten
+                    raise DaqmxError(OVERFLOW, samps_per_chan_read=0)
+                if n >= 0:
+                    want = n
+                elif total is not None and not t.read_all_avail:
+                    want = total - t.read_pos
+                else:
+                    want = acq - t.read_pos
+                if total is not None and t.read_pos + want > total:
+                    raise DaqmxError(BEYOND_END, samps_per_chan_read=0)
+                if not stalled and acq - t.read_pos >= want:
+                    return self._take(t, want)
+                wait_s = (want - (acq - t.read_pos)) / float(t.rate or 1.0) / self.bench.clock.time_scale
+            if (deadline is not None and time.monotonic() >= deadline) or not alive():
+                raise DaqmxError(NOT_YET, samps_per_chan_read=0)
+            left = 0.05 if deadline is None else deadline - time.monotonic()
+            time.sleep(max(0.0, min(wait_s, left, 0.05)))
+
+    def is_done(self, name: str) -> bool:
+        with self._lock:
+            t = self.task(name)
+            if t.state == "idle" or t.rate is None:
+                return True
+            if t.state == "armed" or t.mode == CONTINUOUS:
+                return False
+            return self.bench.clock.now() >= t.t0 + t.samps / t.rate
+
+    def wait_until_done(self, name: str, timeout_s: float, alive: Callable[[], bool] = lambda: True) -> None:
+        deadline = None if timeout_s < 0 else time.monotonic() + timeout_s
+        while self.fault == "timeout" or not self.is_done(name):
+            if (deadline is not None and time.monotonic() >= deadline) or not alive():
+                raise DaqmxError(WAIT_TIMEOUT)
+            time.sleep(0.002)

@@ -1,0 +1,205 @@
+"""The DAQ driver through the real nidaqmx package, over gRPC, to the simulated NI gRPC Device Server."""
+
+from __future__ import annotations
+
+import threading
+import time
+
+import numpy as np
+import pytest
+from scipy.signal import lfilter
+
+from drivers.daq import DaqRig
+from drivers.errors import BufferOverflow, Disconnected, InstrumentErrorReply, InstrumentTimeout, ReplayMismatch
+from drivers.transcript import Transcript
+from labrig.clock import ScaledClock
+from mock_devices.daq_grpc import SimDaq
+from mock_devices.daq_sim import StandInBench
+
+GAIN_A_PER_V, M_PER_V = 2e-3, 5e-4  # not the driver defaults, so the scaling is really exercised
+
+
+@pytest.fixture
+def bench() -> StandInBench:
+    return StandInBench(ScaledClock(1000.0), R_ohm=100.0, tau_s=0.05, k_m_per_V=1e-3)
+
+
+@pytest.fixture
+def sim(bench: StandInBench):
+    with SimDaq(bench, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V, noise_V=1e-4) as s:
+        yield s
+
+
+@pytest.fixture
+def rig(sim: SimDaq):
+    r = DaqRig("SimDev1", grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V)
+    yield r
+    r.abort()
+
+
+def _sine(n: int, fs: float, f: float = 5.0, amp: float = 0.8) -> np.ndarray:
+    return amp * np.sin(2 * np.pi * f * np.arange(n) / fs)
+
+
+def test_finite_record_matches_bench(rig: DaqRig, bench: StandInBench) -> None:
+    fs, n = 1000.0, 3000
+    drive = _sine(n, fs)
+    out = rig.run_finite(drive, fs, timeout_s=5.0)
+    assert set(out) == {"t_s", "voltage_V", "current_A", "displacement_m"}
+    np.testing.assert_allclose(out["t_s"], np.arange(n) / fs)
+    # sample k of every input belongs to drive sample k (AO started by AI's start trigger)
+    np.testing.assert_allclose(out["voltage_V"], drive, atol=1e-3)
+    np.testing.assert_allclose(out["current_A"], drive / 100.0, atol=1e-3 * GAIN_A_PER_V)
+    a = np.exp(-1.0 / (fs * 0.05))
+    disp = lfilter([1 - a], [1, -a], 1e-3 * drive)
+    np.testing.assert_allclose(out["displacement_m"], disp, atol=1e-3 * M_PER_V)
+    assert sum(r[2] for r in bench.records) == n  # the bench saw exactly the record, contiguous
+    starts = [r[0] for r in bench.records]
+    assert np.allclose(np.diff(starts), [r[2] / fs for r in bench.records[:-1]])
+
+
+def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
+    fs, drive = 1000.0, np.r_[_sine(500, 1000.0), np.zeros(500)]  # ends at rest: the bench lag decays
+    with DaqRig(grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V) as good:
+        ref = good.run_finite(drive, fs)
+    with DaqRig(grpc_target=sim.address, current_gain_A_per_V=2 * GAIN_A_PER_V, displacement_m_per_V=3 * M_PER_V) as off:
+        got = off.run_finite(drive, fs)
+    np.testing.assert_allclose(got["current_A"], 2 * ref["current_A"], atol=5e-3 * GAIN_A_PER_V)
+    np.testing.assert_allclose(got["displacement_m"], 3 * ref["displacement_m"], atol=5e-3 * M_PER_V)
+
+
+def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
+    fs, period = 100.0, 50
+    block = _sine(period, fs, f=fs / period)
+    rig.start_continuous(fs, drive_block=block, buffer_s=100.0)
+    blocks = [rig.read_block(200) for _ in range(6)]
+    assert sim.ao_output_V() != 0.0 or np.allclose(block, 0)
+    rig.stop()
+    t = np.concatenate([b["t_s"] for b in blocks])
+    v = np.concatenate([b["voltage_V"] for b in blocks])
+    np.testing.assert_allclose(t, np.arange(1200) / fs)
+    np.testing.assert_allclose(v, np.tile(block, 1200 // period), atol=1e-3)  # AO regenerates, no gap
+    assert sim.ao_output_V() == 0.0
+
+
+def test_continuous_without_drive_reads_zero_volts(rig: DaqRig) -> None:
+    rig.start_continuous(100.0, buffer_s=100.0)
+    a, b = rig.read_block(100), rig.read_block(100)
+    rig.stop()
+    assert b["t_s"][0] == pytest.approx(a["t_s"][-1] + 0.01)
+    assert np.max(np.abs(np.concatenate([a["voltage_V"], b["voltage_V"]]))) < 1e-3
+
+
+def test_ao_returns_to_zero_after_close(sim: SimDaq) -> None:
+    rig = DaqRig(grpc_target=sim.address)
+    rig.run_finite(np.full(200, 1.5), 1000.0)
+    assert sim.ao_output_V() == pytest.approx(1.5)  # the output holds the last drive sample, as hardware does
+    rig.close()
+    assert sim.ao_output_V() == 0.0
+
+
+@pytest.mark.parametrize("fault, exc, when", [
+    ("timeout", InstrumentTimeout, "before"),  # the read never completes while AO drives 2 V
+    ("overflow", BufferOverflow, "before"),  # the first read fails after AO has started
+    ("error", InstrumentErrorReply, "during"),  # a DAQmx error on the call after the read
+])
+def test_ao_returns_to_zero_after_error_mid_record(sim: SimDaq, fault: str, exc: type, when: str) -> None:
+    rig = DaqRig(grpc_target=sim.address)
+    drive = np.full(20_000, 2.0)  # 200 s simulated = 0.2 s wall
+    seen: list[float] = []
+
+    def watch() -> None:
+        deadline = time.monotonic() + 2.0
+        while time.monotonic() < deadline and not any(
+                t.kind == "ao" and t.state == "running" for t in list(sim.device.tasks.values())):
+            time.sleep(0.001)
+        seen.append(sim.ao_output_V())
+        if when == "during":
+            sim.inject(fault)
+
+    if when == "before":
+        sim.inject(fault)
+    th = threading.Thread(target=watch)
+    th.start()
+    with pytest.raises(exc):
+        rig.run_finite(drive, 100.0, timeout_s=0.5)
+    th.join()
+    sim.clear_fault()
+    if fault != "overflow":
+        assert seen == [pytest.approx(2.0)]  # the drive was live mid-record
+    assert sim.ao_output_V() == 0.0
+    rig.close()
+    assert sim.ao_output_V() == 0.0
+
+
+@pytest.mark.parametrize("fault, exc", [
+    ("timeout", InstrumentTimeout),
+    ("overflow", BufferOverflow),
+    ("error", InstrumentErrorReply),
+    ("disconnect", Disconnected),
+])
+def test_each_fault_maps_to_its_exception(rig: DaqRig, sim: SimDaq, fault: str, exc: type) -> None:
+    rig.start_continuous(100.0, buffer_s=100.0)
+    rig.read_block(10)
+    sim.inject(fault)
+    with pytest.raises(exc) as info:
+        rig.read_block(10, timeout_s=0.3)
+    assert info.value.device == "daq"
+    if fault == "error":
+        assert info.value.code == -50103
+    sim.clear_fault()
+
+
+def test_injected_error_code_is_reported(rig: DaqRig, sim: SimDaq) -> None:
+    sim.inject("error", code=-200077)
+    with pytest.raises(InstrumentErrorReply) as info:
+        rig.run_finite(np.zeros(10), 1000.0)
+    assert info.value.code == -200077 and "-200077" in str(info.value)
+
+
+def test_real_overflow_when_the_reader_falls_behind(rig: DaqRig) -> None:
+    rig.start_continuous(1000.0, buffer_s=1.0)  # 1000-sample buffer = 1 ms of wall time at 1000x
+    time.sleep(0.05)
+    with pytest.raises(BufferOverflow):
+        rig.read_block(10)
+
+
+def test_disconnect_then_server_back(sim: SimDaq) -> None:
+    rig = DaqRig(grpc_target=sim.address)
+    sim.inject("disconnect")
+    with pytest.raises(Disconnected):
+        rig.run_finite(np.zeros(100), 1000.0)
+    assert rig.abort() is False  # cannot confirm 0 V on a dead link, and says so
+    sim.clear_fault()
+    with DaqRig(grpc_target=sim.address) as again:
+        assert len(again.run_finite(np.zeros(100), 1000.0)["t_s"]) == 100
+
+
+def test_replay_answers_from_the_recording(sim: SimDaq) -> None:
+    tr = Transcript()
+    drive, fs = _sine(400, 1000.0), 1000.0
+    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+        live = rig.run_finite(drive, fs)
+    calls = [e.meta["method"] for e in tr.for_device("daq")]
+    assert calls == ["run_finite", "zero_output"]
+    payload = tr.for_device("daq")[0].payload
+    assert len(payload) == 4 * 400 * 8  # four float64 arrays
+
+    saved = Transcript.loads(tr.dumps())
+    with DaqRig.from_replay(saved, "daq") as replay:
+        again = replay.run_finite(drive, fs)
+    for k in live:
+        np.testing.assert_array_equal(again[k], live[k])
+
+
+def test_replay_mismatch_names_the_call(sim: SimDaq) -> None:
+    tr = Transcript()
+    drive = _sine(300, 1000.0)
+    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+        rig.run_finite(drive, 1000.0)
+    with pytest.raises(ReplayMismatch, match="run_finite"):
+        DaqRig.from_replay(tr, "daq").run_finite(drive * 1.01, 1000.0)
+    with pytest.raises(ReplayMismatch, match="run_finite"):
+        DaqRig.from_replay(tr, "daq").run_finite(drive, 2000.0)
+    with pytest.raises(ReplayMismatch, match="current_gain_A_per_V"):
+        DaqRig.from_replay(tr, "daq", current_gain_A_per_V=5e-3).run_finite(drive, 1000.0)
