@@ -8,7 +8,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.signal import chirp
 
 
 def times(duration_s: float, fs: float) -> np.ndarray:
@@ -30,6 +29,8 @@ def sine(amplitude_V: float, frequency_Hz: float, duration_s: float, fs: float, 
 
 def swept_sine(amplitude_V: float, f0_Hz: float, f1_Hz: float, duration_s: float, fs: float, method: str = "logarithmic") -> np.ndarray:
     """A continuous sweep from ``f0_Hz`` to ``f1_Hz`` (scipy.signal.chirp), starting at zero phase of a sine."""
+    from scipy.signal import chirp  # scipy.signal costs ~0.9 s to import: only when sweeping
+
     t = times(duration_s, fs)
     return amplitude_V * chirp(t, f0_Hz, duration_s, f1_Hz, method=method, phi=-90.0)
 

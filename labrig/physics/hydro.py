@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 from numpy.polynomial.polynomial import polyval
-from scipy.special import kv
+from scipy.special import kve
 
 from labrig.physics.params import Fluid
 
@@ -29,7 +29,8 @@ def reynolds(omega: np.ndarray | float, width: float, fluid: Fluid) -> np.ndarra
 def gamma_circular(re: np.ndarray | float) -> np.ndarray:
     """Hydrodynamic function of a circular cylinder (the bracket of eq. 21)."""
     z = -1j * np.sqrt(1j * np.asarray(re, float))
-    return 1.0 + 4.0 * kv(1, z) / (z * kv(0, z))
+    # the exponentially scaled K (kve) keeps the ratio finite at large Re, where K itself underflows
+    return 1.0 + 4.0 * kve(1, z) / (z * kve(0, z))
 
 
 def rectangular_correction(re: np.ndarray | float) -> np.ndarray:

@@ -82,8 +82,14 @@ def voltage_shape(s: np.ndarray, x: np.ndarray, line: LineElectrical, length: fl
     Returns shape (len(s), len(x)). Written with decaying exponentials only (Re a > 0).
     """
     a = propagation(np.atleast_1d(np.asarray(s, complex)), line)[:, None]
-    x = np.atleast_1d(np.asarray(x, float))[None, :]
-    return (np.exp(-a * x) + np.exp(-a * (2.0 * length - x))) / (1.0 + np.exp(-2.0 * a * length))
+    x = np.atleast_1d(np.asarray(x, float))
+    near = np.exp(-a * x[None, :])
+    if np.allclose(x + x[::-1], length, rtol=0, atol=1e-12 * length):
+        # nodes symmetric about L/2 (Gauss-Legendre): exp(-a(2L - x_k)) = exp(-aL) exp(-a x_(n-1-k))
+        far = np.exp(-a * length) * near[:, ::-1]
+    else:
+        far = np.exp(-a * (2.0 * length - x[None, :]))
+    return (near + far) / (1.0 + np.exp(-2.0 * a * length))
 
 
 def voltage_along(s: np.ndarray, x: np.ndarray, sp: Specimen) -> np.ndarray:

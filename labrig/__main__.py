@@ -1,0 +1,3 @@
+from labrig.cli import entry
+
+entry()
