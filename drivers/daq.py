@@ -28,7 +28,7 @@ import grpc
 import nidaqmx
 import numpy as np
 from nidaqmx.constants import AcquisitionType, Edge
-from nidaqmx.errors import DaqError
+from nidaqmx.errors import DaqError, DaqNotFoundError
 from nidaqmx.errors import RpcError as NiRpcError
 from nidaqmx.stream_readers import AnalogMultiChannelReader
 from nidaqmx.stream_writers import AnalogSingleChannelWriter
@@ -129,6 +129,8 @@ class DaqRig:
             if code in GONE_CODES:
                 raise Disconnected(self.name, msg) from e
             raise InstrumentErrorReply(self.name, msg, code=code) from e
+        except DaqNotFoundError as e:  # no NI-DAQmx on this machine: nothing to talk to
+            raise Disconnected(self.name, f"{what}: {e}") from e
         except (NiRpcError, grpc.RpcError) as e:
             rpc = e.rpc_code if isinstance(e, NiRpcError) else e.code()  # type: ignore[union-attr]
             msg = f"{what}: gRPC {rpc}: {e}"
@@ -319,7 +321,7 @@ class DaqRig:
         if self._closed:
             return
         try:
-            if self._replay is None or not self._replay.exhausted:
+            if self._replay is None:  # a replay ends where the caller stops; the recorded close is not checked
                 self.zero_output()
         finally:
             self._release()

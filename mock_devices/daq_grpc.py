@@ -155,7 +155,7 @@ class DaqServicer(pb_grpc.NiDAQmxServicer):
 
     # -------------------------------------------------------------------- data
     def WriteAnalogF64(self, req, ctx):
-        flat = np.fromiter(req.write_array, dtype=float, count=len(req.write_array))
+        flat = np.array(req.write_array, dtype=float)
         n = self.dev.write(req.task.name, flat, req.num_samps_per_chan, req.auto_start,
                            req.data_layout_raw or req.data_layout)
         return pb.WriteAnalogF64Response(samps_per_chan_written=n)

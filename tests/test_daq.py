@@ -203,3 +203,26 @@ def test_replay_mismatch_names_the_call(sim: SimDaq) -> None:
         DaqRig.from_replay(tr, "daq").run_finite(drive, 2000.0)
     with pytest.raises(ReplayMismatch, match="current_gain_A_per_V"):
         DaqRig.from_replay(tr, "daq", current_gain_A_per_V=5e-3).run_finite(drive, 1000.0)
+
+
+def test_replay_of_a_continuous_run(sim: SimDaq) -> None:
+    tr = Transcript()
+    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+        rig.start_continuous(100.0, buffer_s=100.0)
+        live = [rig.read_block(50), rig.read_block(50)]
+        rig.stop()
+    with DaqRig.from_replay(tr, "daq") as rig:
+        rig.start_continuous(100.0, buffer_s=100.0)
+        again = [rig.read_block(50), rig.read_block(50)]
+        with pytest.raises(ReplayMismatch, match="read_block"):
+            rig.read_block(60)
+    for a, b in zip(live, again):
+        np.testing.assert_array_equal(a["voltage_V"], b["voltage_V"])
+        np.testing.assert_array_equal(a["t_s"], b["t_s"])
+
+
+def test_local_path_without_ni_daqmx_is_a_clear_error() -> None:
+    rig = DaqRig("Dev1")  # plain nidaqmx.Task(): needs the NI-DAQmx driver on this machine
+    with pytest.raises((Disconnected, InstrumentErrorReply)):
+        rig.run_finite(np.zeros(10), 1000.0)
+    assert rig.abort() is False
