@@ -143,3 +143,37 @@ def response_cmd(preset, pressure_kPa, kind, amplitude_V, frequency_Hz, fmin, fm
     disp, cur = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], v, fs)
     write_csv(out, ["t_s", "v_V", "i_A", "disp_m"], [np.arange(v.size) / fs, v, cur, disp])
     click.echo(f"wrote {v.size} samples ({kind}, {duration_s:g} s at {fs:g} Hz) to {out}; peak |disp| = {np.abs(disp).max() * 1e3:.3f} mm")
+
+
+@model.command("optimum")
+@_preset
+@click.option("--pressure", "pressures", cls=MultiValueOption, type=float, help="kPa (default: the paper's four)")
+@click.option("--printed", is_flag=True, help="use eq. 17 and eq. 34 as printed (total-current charge, f_app = M'')")
+@click.option("--json", "as_json", is_flag=True)
+def optimum_cmd(preset: str, pressures: tuple[float, ...], printed: bool, as_json: bool) -> None:
+    """Model actuation against clamping pressure: 1 V step peak (30 s), 1 V / 0.1 Hz amplitude, |H(f1)|."""
+    fs = 200.0
+    rows = []
+    for p in pressures or presets.PAPER_PRESSURES_KPA:
+        sp = _specimen(preset, p, **({"charge": "total", "modal_force": "paper"} if printed else {}))
+        step = timeresp.simulate(lambda s: transfer.displacement_tf(s, sp), signals.step(1.0, 30.0, fs), fs)
+        f1 = transfer.modal_set(sp).f_Hz[0]
+        rows.append(
+            {
+                "pressure_kPa": p,
+                "step_peak_m": float(np.abs(step).max()),
+                "harmonic_0p1Hz_m": float(abs(transfer.frf(np.array([0.1]), sp)[0])),
+                "f1_Hz": f1,
+                "frf_at_f1_m_per_V": float(abs(transfer.frf(np.array([f1]), sp)[0])),
+            }
+        )
+    best = max(rows, key=lambda r: r["step_peak_m"])["pressure_kPa"]
+    if as_json:
+        print_json({"preset": preset, "printed": printed, "rows": rows, "optimum_pressure_kPa": best})
+        return
+    click.echo(f"{'kPa':>8} {'step peak mm':>13} {'0.1 Hz mm':>10} {'f1 Hz':>7} {'|H(f1)| mm/V':>13}")
+    for r in rows:
+        click.echo(
+            f"{r['pressure_kPa']:8.0f} {r['step_peak_m'] * 1e3:13.4f} {r['harmonic_0p1Hz_m'] * 1e3:10.4f} {r['f1_Hz']:7.3f} {r['frf_at_f1_m_per_V'] * 1e3:13.4f}"
+        )
+    click.echo(f"largest step response at {best:g} kPa")
