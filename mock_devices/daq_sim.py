@@ -122,19 +122,9 @@ class StandInBench:
 class SimDevice:
     """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting."""
 
-    def __init__(
-        self,
-        bench: BenchView,
-        name: str = "SimDev1",
-        product_type: str = "PXIe-6361",
-        drive_channel: str = "ao0",
-        current_gain_A_per_V: float = 1e-3,
-        displacement_m_per_V: float = 1e-3,
-        noise_V: float = 1e-4,
-        seed: int | None = 0,
-        n_ai: int = 16,
-        n_ao: int = 2,
-    ):
+    def __init__(self, bench: BenchView, name: str = "SimDev1", product_type: str = "PXIe-6361",
+                 drive_channel: str = "ao0", current_gain_A_per_V: float = 1e-3, displacement_m_per_V: float = 1e-3,
+                 noise_V: float = 1e-4, seed: int | None = 0, n_ai: int = 16, n_ao: int = 2):
         self.bench, self.name, self.product_type = bench, name, product_type
         self.drive_channel = drive_channel
         self.gain_A_per_V, self.m_per_V, self.noise_V = current_gain_A_per_V, displacement_m_per_V, noise_V

@@ -226,3 +226,30 @@ def test_local_path_without_ni_daqmx_is_a_clear_error() -> None:
     with pytest.raises((Disconnected, InstrumentErrorReply)):
         rig.run_finite(np.zeros(10), 1000.0)
     assert rig.abort() is False
+
+
+def test_start_trigger_order_matters_as_on_hardware(sim: SimDaq) -> None:
+    """Plain nidaqmx (high-level Task.write / Task.read): AO armed on ai/StartTrigger must be started first."""
+    import grpc
+    import nidaqmx
+    from nidaqmx.constants import AcquisitionType
+
+    channel = grpc.insecure_channel(sim.address)
+
+    def task(name: str) -> nidaqmx.Task:
+        return nidaqmx.Task(name, grpc_options=nidaqmx.GrpcSessionOptions(grpc_channel=channel, session_name=name))
+
+    for ao_first in (False, True):  # the pin holds what a finished AO left: AI-first case goes first
+        ao, ai = task(f"ao{ao_first}"), task(f"ai{ao_first}")
+        ao.ao_channels.add_ao_voltage_chan("SimDev1/ao0")
+        ai.ai_channels.add_ai_voltage_chan("SimDev1/ai0")
+        for t in (ao, ai):
+            t.timing.cfg_samp_clk_timing(1000.0, sample_mode=AcquisitionType.FINITE, samps_per_chan=100)
+        ao.triggers.start_trigger.cfg_dig_edge_start_trig("/SimDev1/ai/StartTrigger")
+        ao.write(np.full(100, 1.0), auto_start=False)
+        (ao.start(), ai.start()) if ao_first else (ai.start(), ao.start())
+        v = np.asarray(ai.read(100, timeout=2.0))
+        assert np.allclose(v, 1.0 if ao_first else 0.0, atol=1e-3)  # late AO missed the edge: no drive
+        ao.close()
+        ai.close()
+    channel.close()
