@@ -1,0 +1,215 @@
+"""The simulated bench ("world"): one IPMC strip from labrig.physics in a clamp, in water or air, with a
+load cell and a clamp that a simulated operator or motor tightens. Every simulated instrument asks this
+one object, so the laser, the DAQ, the load cell and the impedance analyser agree with each other.
+
+Linear physics comes from ``labrig.physics`` (the single home of the equations). The strip's electrical
+and mechanical memory carries across records: each record is simulated together with the drive history of
+the last ``memory_s`` seconds (older drive is forgotten; the CPE's slow tail from it is below the noise).
+
+Hidden effects (the diagnosis scenarios) plug in as ``Effect`` objects; their truth stays here and never
+reaches a session file.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from typing import Protocol
+
+import numpy as np
+
+from labrig.physics import impedance as imp
+from labrig.physics import presets, timeresp, transfer
+from labrig.physics.params import Specimen
+
+
+class Clock(Protocol):
+    time_scale: float
+
+    def now(self) -> float: ...
+
+    def sleep(self, seconds: float) -> None: ...
+
+
+@dataclass
+class Noise:
+    """Physical noise of the bench (what a good real bench shows), all standard deviations."""
+
+    displacement_m: float = 0.5e-6  # laser head noise
+    current_A: float = 2e-6  # current amplifier input noise
+    voltage_V: float = 0.2e-3
+    force_N: float = 0.01
+    impedance_rel: float = 0.002
+
+
+class Effect:
+    """Something the baseline model leaves out. Each hook defaults to "no change"."""
+
+    name = "none"
+
+    def specimen(self, sp: Specimen, t: float, bench: "Bench") -> Specimen:
+        return sp
+
+    def drive(self, v: np.ndarray, t: np.ndarray, bench: "Bench") -> np.ndarray:
+        """The voltage the strip sees, given the commanded drive (before the linear model)."""
+        return v
+
+    def outputs(self, out: dict[str, np.ndarray], t: np.ndarray, v: np.ndarray, bench: "Bench") -> dict[str, np.ndarray]:
+        """Measured signals after the linear model (current_A, displacement_m)."""
+        return out
+
+    def force(self, f: float, t: float, bench: "Bench") -> float:
+        return f
+
+    def impedance(self, z: np.ndarray, f: np.ndarray, bench: "Bench") -> np.ndarray:
+        return z
+
+
+@dataclass
+class _Segment:
+    t0: float
+    fs: float
+    v: np.ndarray  # the voltage the strip saw (after drive effects)
+
+    @property
+    def t1(self) -> float:
+        return self.t0 + self.v.size / self.fs
+
+
+@dataclass
+class _Trace:
+    """The latest computed response, kept for instruments that sample "now" (the laser)."""
+
+    t0: float
+    fs: float
+    displacement: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+
+class Bench:
+    """The simulated bench. Thread-safe: instruments run on their own server threads."""
+
+    def __init__(
+        self,
+        clock: Clock,
+        preset: str = "paper",
+        pressure_kPa: float | None = None,
+        seed: int = 0,
+        effects: list[Effect] | None = None,
+        noise: Noise | None = None,
+        memory_s: float = 120.0,
+        clamp_tau_s: float = 3.0,
+        specimen_changes: dict | None = None,
+    ):
+        self.clock = clock
+        self.preset = presets.get(preset)
+        self.rng = np.random.default_rng(seed)
+        self.effects = list(effects or [])
+        self.noise = noise or Noise()
+        self.memory_s = memory_s
+        self.clamp_tau_s = clamp_tau_s
+        self._changes = dict(specimen_changes or {})
+        p = self.preset.default_pressure_kPa if pressure_kPa is None else pressure_kPa
+        self._area = self.preset.base.geometry.clamp_area
+        self._force_target = p * 1e3 * self._area
+        self._force_from = self._force_target
+        self._force_t0 = -1e9
+        self._history: list[_Segment] = []
+        self._trace = _Trace(0.0, 1.0)
+        self._lock = threading.RLock()
+
+    # ---------------------------------------------------------------------------------- clamp
+    def set_clamp_force(self, target_N: float) -> None:
+        """Motorised clamp / operator: the force moves exponentially towards ``target_N``."""
+        with self._lock:
+            now = self.clock.now()
+            self._force_from = self._true_force(now)
+            self._force_target = float(target_N)
+            self._force_t0 = now
+
+    def _true_force(self, t: float) -> float:
+        a = np.exp(-max(t - self._force_t0, 0.0) / self.clamp_tau_s)
+        f = self._force_target + (self._force_from - self._force_target) * a
+        for e in self.effects:
+            f = e.force(f, t, self)
+        return float(f)
+
+    def clamp_force_now(self) -> float:
+        with self._lock:
+            return self._true_force(self.clock.now()) + self.noise.force_N * self.rng.standard_normal()
+
+    def pressure_kPa(self, t: float | None = None) -> float:
+        t = self.clock.now() if t is None else t
+        return max(self._true_force(t), 1e-3) / self._area / 1e3
+
+    def specimen(self, t: float | None = None) -> Specimen:
+        """The strip as it is at time t (clamp state, then any effect's drift)."""
+        t = self.clock.now() if t is None else t
+        # round the pressure so a steady clamp reuses the cached modes
+        sp = self.preset.specimen(round(self.pressure_kPa(t), 1), **self._changes)
+        for e in self.effects:
+            sp = e.specimen(sp, t, self)
+        return sp
+
+    # ---------------------------------------------------------------------------------- signals
+    def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
+        """Apply ``drive_V`` from ``t0`` at ``fs``; return voltage_V, current_A, displacement_m (bench_api)."""
+        drive = np.asarray(drive_V, float)
+        n = drive.size
+        t = t0 + np.arange(n) / fs
+        with self._lock:
+            v = drive
+            for e in self.effects:
+                v = e.drive(v, t, self)
+            self._forget_before(t0 - self.memory_s)
+            self._history = [h for h in self._history if h.t1 <= t0 + 1e-12]
+            sp = self.specimen(t0)
+            # drive history resampled onto this record's grid, then the record, then a tail at rest
+            start = self._history[0].t0 if self._history else t0
+            k0 = int(np.floor((t0 - start) * fs))
+            tail = min(max(n, int(fs)), int(30 * fs))
+            u = np.zeros(k0 + n + tail)
+            grid = start + np.arange(k0) / fs
+            for h in self._history:
+                sel = (grid >= h.t0) & (grid < h.t1)
+                if sel.any():
+                    u[:k0][sel] = np.interp(grid[sel], h.t0 + np.arange(h.v.size) / h.fs, h.v)
+            u[k0 : k0 + n] = v
+            disp, cur = timeresp.simulate_many(
+                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs
+            )
+            self._history.append(_Segment(t0, fs, v.copy()))
+            self._trace = _Trace(t0, fs, disp[k0:].copy())
+            out = {"current_A": cur[k0 : k0 + n], "displacement_m": disp[k0 : k0 + n]}
+            for e in self.effects:
+                out = e.outputs(out, t, v, self)
+            nz = self.noise
+            return {
+                "voltage_V": v + nz.voltage_V * self.rng.standard_normal(n),
+                "current_A": out["current_A"] + nz.current_A * self.rng.standard_normal(n),
+                "displacement_m": out["displacement_m"] + nz.displacement_m * self.rng.standard_normal(n),
+            }
+
+    def _forget_before(self, t: float) -> None:
+        self._history = [h for h in self._history if h.t1 > t]
+
+    def displacement_now(self) -> float:
+        """Tip displacement at the laser spot now: from the latest record's trace (with its tail at rest)."""
+        with self._lock:
+            tr = self._trace
+            now = self.clock.now()
+            if tr.displacement.size == 0:
+                d = 0.0
+            else:
+                k = int((now - tr.t0) * tr.fs)
+                d = float(tr.displacement[min(max(k, 0), tr.displacement.size - 1)]) if k >= 0 else 0.0
+            return d + self.noise.displacement_m * self.rng.standard_normal()
+
+    def impedance(self, freqs_Hz: np.ndarray, ac_V: float, bias_V: float) -> np.ndarray:
+        """Z the analyser measures at the present clamp state (small-signal: ac_V and bias_V only add effects)."""
+        f = np.asarray(freqs_Hz, float)
+        with self._lock:
+            z = imp.impedance(2j * np.pi * f, self.specimen())
+            for e in self.effects:
+                z = e.impedance(z, f, self)
+            scale = 1.0 + self.noise.impedance_rel * (self.rng.standard_normal(f.size) + 1j * self.rng.standard_normal(f.size)) / np.sqrt(2)
+            return z * scale

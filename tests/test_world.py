@@ -1,0 +1,68 @@
+"""The simulated bench: its signals are labrig.physics, with memory across records and a clamp that moves."""
+
+import numpy as np
+import pytest
+
+from labrig import signals
+from labrig.clock import ScaledClock
+from labrig.physics import impedance as imp
+from labrig.physics import presets, timeresp, transfer
+from mock_devices.world import Bench, Effect, Noise
+
+QUIET = Noise(0, 0, 0, 0, 0)
+
+
+def test_records_carry_the_strips_memory():
+    b = Bench(ScaledClock(1000.0), noise=QUIET)
+    fs = 500.0
+    on, off = signals.step(1.0, 10, fs), np.zeros(int(10 * fs))
+    r1, r2 = b.run_record(0.0, fs, on), b.run_record(10.0, fs, off)
+    sp = presets.get("paper").specimen(3062)
+    full = timeresp.simulate(lambda s: transfer.displacement_tf(s, sp), np.concatenate([on, off]), fs)
+    got = np.concatenate([r1["displacement_m"], r2["displacement_m"]])
+    assert np.max(np.abs(got - full)) < 1e-5 * np.max(np.abs(full))
+    # after the drive returns to 0 V the strip relaxes back, not instantly
+    assert 0 < r2["displacement_m"][-1] < r2["displacement_m"][0]
+
+
+def test_current_and_voltage_follow_the_impedance():
+    b = Bench(ScaledClock(1000.0), noise=QUIET, pressure_kPa=612)
+    fs, f0 = 200.0, 1.0
+    v = signals.sine(0.5, f0, 30.0, fs)
+    r = b.run_record(0.0, fs, v)
+    t = np.arange(v.size) / fs
+    tail = t > 20
+    ratio = np.mean(r["current_A"][tail] * np.exp(-2j * np.pi * f0 * t[tail])) / np.mean(v[tail] * np.exp(-2j * np.pi * f0 * t[tail]))
+    expected = 1 / imp.impedance(np.array([2j * np.pi * f0]), presets.get("paper").specimen(612))[0]
+    assert abs(ratio / expected - 1) < 0.01
+    assert np.allclose(r["voltage_V"], v)
+
+
+def test_clamp_moves_towards_its_target_and_changes_the_strip():
+    clock = ScaledClock(1000.0)
+    b = Bench(clock, noise=QUIET, pressure_kPa=3062)
+    f_high = b.clamp_force_now()
+    assert f_high == pytest.approx(3062e3 * 16e-6, rel=1e-6)
+    b.set_clamp_force(9.8)
+    clock.sleep(30 * b.clamp_tau_s)
+    assert b.clamp_force_now() == pytest.approx(9.8, rel=1e-3)
+    assert b.specimen().Kt_bar == pytest.approx(4.17, rel=0.01)
+
+
+def test_effects_hook_in_without_touching_the_physics():
+    class Offset(Effect):
+        name = "test_offset"
+
+        def outputs(self, out, t, v, bench):
+            return {**out, "displacement_m": out["displacement_m"] + 1e-3}
+
+    b = Bench(ScaledClock(1000.0), noise=QUIET, effects=[Offset()])
+    r = b.run_record(0.0, 100.0, np.zeros(100))
+    assert np.allclose(r["displacement_m"], 1e-3)
+
+
+def test_impedance_noise_is_small_and_seeded():
+    a = Bench(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
+    b = Bench(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
+    exact = imp.impedance(2j * np.pi * np.array([1.0, 10.0]), presets.get("paper").specimen())
+    assert np.array_equal(a, b) and np.allclose(a, exact, rtol=0.01)
