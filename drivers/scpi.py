@@ -38,7 +38,7 @@ class ScpiHost(Protocol):
 
 def fmt(value: float) -> str:
     """A number as SCPI text: enough digits for a frequency, no locale, no numpy repr."""
-    return f"{float(value):.10G}"
+    return f"{float(value):.12G}"
 
 
 def parse_floats(device: str, cmd: str, reply: str) -> np.ndarray:

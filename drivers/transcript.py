@@ -123,6 +123,12 @@ class RecordingSerial:
     def __getattr__(self, name: str) -> Any:  # timeout, in_waiting, reset_input_buffer, close, ...
         return getattr(self._port, name)
 
+    def __setattr__(self, name: str, value: Any) -> None:  # port.timeout = ... must reach the port
+        if name in ("_port", "_tr", "device"):
+            object.__setattr__(self, name, value)
+        else:
+            setattr(self._port, name, value)
+
 
 class ReplaySerial:
     """A pyserial-like port that answers from a recording.
@@ -218,6 +224,12 @@ class RecordingMessages:
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self._res, name)
+
+    def __setattr__(self, name: str, value: Any) -> None:  # resource.timeout = ... must reach the resource
+        if name in ("_res", "_tr", "device"):
+            object.__setattr__(self, name, value)
+        else:
+            setattr(self._res, name, value)
 
 
 class ReplayMessages:

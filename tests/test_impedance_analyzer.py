@@ -17,7 +17,7 @@ from drivers.errors import (Disconnected, InstrumentErrorReply, InstrumentTimeou
                             ReplayMismatch)
 from drivers.impedance_analyzer import ImpedanceAnalyzer
 from drivers.scpi import parse_error, parse_floats
-from drivers.transcript import ReplayMessages, Transcript
+from drivers.transcript import RecordingMessages, ReplayMessages, Transcript
 from labrig.clock import ScaledClock
 from mock_devices.impedance_sim import SCRIPTS, DemoBench, ImpedanceAnalyzerSim, record, script_error, script_session
 from mock_devices.scpi_server import ScpiServer
@@ -83,7 +83,7 @@ def test_log_sweep_equals_bench(an: ImpedanceAnalyzer, bench: RCBench) -> None:
 
 def test_list_sweep_bias_and_ac_reach_simulator(an: ImpedanceAnalyzer, sim: ImpedanceAnalyzerSim,
                                                 bench: RCBench) -> None:
-    freqs = [0.5, 2.0, 30.0, 400.0, 5e3]
+    freqs = [0.5, 2.0, 31.41592653589, 400.0, 5123.456789]  # digits a sloppy format would lose
     an.configure_list(freqs, ac_V=0.05, bias_V=0.2)
     assert (sim.ac_V, sim.bias_V, sim.bias_on, sim.sweep_type) == (0.05, 0.2, True, "SEGM")
     assert (an.ac_V, an.bias_V, an.bias_on, an.points) == (0.05, 0.2, True, 5)
@@ -159,6 +159,7 @@ def test_fault_disconnect(an: ImpedanceAnalyzer, sim: ImpedanceAnalyzerSim, rm: 
         assert again.identify() == sim.idn
 
 
+@pytest.mark.timeout(10)
 def test_disconnect_during_a_long_sweep(an: ImpedanceAnalyzer, sim: ImpedanceAnalyzerSim) -> None:
     """The *OPC? wait is minutes long here; a dropped link must show as Disconnected within a second."""
     an.configure_list([0.001], ac_V=0.01)  # 3000 s simulated = 3 s of wall time
@@ -317,3 +318,12 @@ def test_driver_never_imports_mock_devices() -> None:
     code = "import sys, drivers.impedance_analyzer; print(any(m.startswith('mock_devices') for m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+def test_recording_wrapper_forwards_timeout(sim: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager) -> None:
+    """Setting the timeout through the recorder must reach the real resource (transcript.py fix)."""
+    res = rm.open_resource(sim.resource_name, read_termination="\n", write_termination="\n")
+    rec = RecordingMessages(res, Transcript(), "impedance")
+    rec.timeout = 1234
+    assert res.timeout == 1234
+    res.close()
