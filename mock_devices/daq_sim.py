@@ -46,6 +46,7 @@ ERR_MESSAGES: dict[int, str] = {
     -201003: "Device cannot be accessed. Possible causes: device is no longer present in the system.",
 }
 OVERFLOW, NOT_YET, BEYOND_END, WAIT_TIMEOUT = -200279, -200284, -200278, -200560
+EAGER_MAX = 2_000_000  # finite records up to this many samples are computed when AI starts
 AI_RANGES_V = (0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0)  # X-series input ranges (±)
 
 
@@ -85,6 +86,7 @@ class Task:
     gen_pos: int = 0
     pending: deque = field(default_factory=deque)  # generated AI blocks not yet read
     sticky_error: int | None = None
+    debt_s: float = 0.0  # simulated time spent computing the bench: not the client's lag
 
     def n_total(self) -> int | None:
         return self.samps if self.mode == FINITE else None
@@ -124,9 +126,10 @@ class SimDevice:
 
     def __init__(self, bench: BenchView, name: str = "SimDev1", product_type: str = "PXIe-6361",
                  drive_channel: str = "ao0", current_gain_A_per_V: float = 1e-3, displacement_m_per_V: float = 1e-3,
-                 noise_V: float = 1e-4, seed: int | None = 0, n_ai: int = 16, n_ao: int = 2):
+                 noise_V: float = 1e-4, seed: int | None = 0, n_ai: int = 16, n_ao: int = 2, block_s: float = 1.0):
         self.bench, self.name, self.product_type = bench, name, product_type
         self.drive_channel = drive_channel
+        self.block_s = block_s  # continuous mode: simulated seconds asked of the bench per call
         self.gain_A_per_V, self.m_per_V, self.noise_V = current_gain_A_per_V, displacement_m_per_V, noise_V
         self.ai_phys = [f"ai{i}" for i in range(n_ai)]
         self.ao_phys = [f"ao{i}" for i in range(n_ao)]
@@ -296,7 +299,7 @@ class SimDevice:
                 raise DaqmxError(-200462)
             t.read_pos = t.gen_pos = 0
             t.pending.clear()
-            t.sticky_error = None
+            t.sticky_error, t.debt_s = None, 0.0
             if t.trigger:
                 t.state = "armed"  # waits for the edge of the other task's start trigger
             else:
@@ -310,6 +313,10 @@ class SimDevice:
         for o in self.tasks.values():
             if o.state == "armed" and o.trigger == term:
                 self._begin(o, t0)
+        if t.kind == "ai" and t.mode == FINITE and t.samps <= EAGER_MAX:
+            # the whole record at once: the bench then knows the motion while it happens (laser, load cell)
+            # and is asked once; samples still become readable only as the clock passes them
+            self._generate(t, t.samps)
 
     def stop(self, name: str) -> None:
         with self._lock:
@@ -338,13 +345,17 @@ class SimDevice:
         total = t.n_total()
         rate = float(t.rate or 1.0)
         while t.gen_pos < upto:
-            k = max(upto - t.gen_pos, min(int(rate * 0.05) + 1, (t.buf_size or upto) // 4))
+            k = max(upto - t.gen_pos, int(rate * self.block_s) + 1)
+            if total is None:
+                k = min(k, max(upto - t.gen_pos, (t.buf_size or k) // 2))
             if total is not None:
                 k = min(k, total - t.gen_pos)
             idx = t.gen_pos + np.arange(k)
             times = t.t0 + idx / rate
             drive = self.ao_values(self.drive_channel, times)
+            w0 = time.perf_counter()
             rec = self.bench.run_record(float(times[0]), rate, drive)
+            t.debt_s += (time.perf_counter() - w0) * self.bench.clock.time_scale
             sig = {"ai0": rec["voltage_V"], "ai1": np.asarray(rec["current_A"]) / self.gain_A_per_V,
                    "ai2": np.asarray(rec["displacement_m"]) / self.m_per_V}
             block = np.empty((len(t.chans), k))
@@ -392,7 +403,8 @@ class SimDevice:
                     raise DaqmxError(t.sticky_error, samps_per_chan_read=0)
                 acq, total = self.acquired(t), t.n_total()
                 stalled = self.fault == "timeout"  # as if the sample clock stopped: nothing new, no overflow
-                if not stalled and total is None and t.buf_size is not None and acq - t.read_pos > t.buf_size:
+                behind = acq - t.read_pos - int(t.debt_s * float(t.rate or 1.0))
+                if not stalled and total is None and t.buf_size is not None and behind > t.buf_size:
                     t.sticky_error = OVERFLOW  # the hardware stopped: unread samples would be overwritten
                     raise DaqmxError(OVERFLOW, samps_per_chan_read=0)
                 if n >= 0:
