@@ -24,6 +24,7 @@ import grpc
 import numpy as np
 from nidaqmx._stubs import nidaqmx_pb2 as pb
 from nidaqmx._stubs import nidaqmx_pb2_grpc as pb_grpc
+from scipy.signal import lfilter
 
 from mock_devices.bench_api import BenchView
 from mock_devices.daq_sim import ERR_MESSAGES, DaqmxError, SimDevice
@@ -306,3 +307,24 @@ class SimDaq:
 
     def __exit__(self, *exc: object) -> None:
         self.stop()
+
+
+class StandInBench:
+    """A tiny linear bench for tests and benchmarks (not the world): R-only strip, first-order bending.
+
+    current = V / R; displacement = k·V through a first-order lag of time constant ``tau_s``
+    (exact discretisation, state carried across contiguous records).
+    """
+
+    def __init__(self, clock: Any, R_ohm: float = 100.0, tau_s: float = 0.05, k_m_per_V: float = 1e-3):
+        self.clock, self.R_ohm, self.tau_s, self.k_m_per_V = clock, R_ohm, tau_s, k_m_per_V
+        self._y = 0.0
+        self.records: list[tuple[float, float, int]] = []  # (t0, fs, n) of each call
+
+    def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
+        v = np.asarray(drive_V, dtype=float)
+        self.records.append((t0, fs, len(v)))
+        a = np.exp(-1.0 / (fs * self.tau_s))
+        y, _ = lfilter([1.0 - a], [1.0, -a], self.k_m_per_V * v, zi=[a * self._y])
+        self._y = float(y[-1]) if len(y) else self._y
+        return {"voltage_V": v.copy(), "current_A": v / self.R_ohm, "displacement_m": y}

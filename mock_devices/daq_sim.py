@@ -17,10 +17,9 @@ import threading
 import time
 from collections import deque
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Callable
 
 import numpy as np
-from scipy.signal import lfilter
 
 from mock_devices.bench_api import BenchView
 
@@ -98,27 +97,6 @@ def _default_input_buffer(rate: float) -> int:
         if rate <= top:
             return size
     return 1_000_000
-
-
-class StandInBench:
-    """A tiny linear bench for tests and benchmarks (not the world): R-only strip, first-order bending.
-
-    current = V / R; displacement = k·V through a first-order lag of time constant ``tau_s``
-    (exact discretisation, state carried across contiguous records).
-    """
-
-    def __init__(self, clock: Any, R_ohm: float = 100.0, tau_s: float = 0.05, k_m_per_V: float = 1e-3):
-        self.clock, self.R_ohm, self.tau_s, self.k_m_per_V = clock, R_ohm, tau_s, k_m_per_V
-        self._y = 0.0
-        self.records: list[tuple[float, float, int]] = []  # (t0, fs, n) of each call
-
-    def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
-        v = np.asarray(drive_V, dtype=float)
-        self.records.append((t0, fs, len(v)))
-        a = np.exp(-1.0 / (fs * self.tau_s))
-        y, zf = lfilter([1.0 - a], [1.0, -a], self.k_m_per_V * v, zi=[a * self._y])
-        self._y = float(y[-1]) if len(y) else self._y
-        return {"voltage_V": v.copy(), "current_A": v / self.R_ohm, "displacement_m": y}
 
 
 class SimDevice:

@@ -13,8 +13,7 @@ from drivers.daq import DaqRig
 from drivers.errors import BufferOverflow, Disconnected, InstrumentErrorReply, InstrumentTimeout, ReplayMismatch
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
-from mock_devices.daq_grpc import SimDaq
-from mock_devices.daq_sim import StandInBench
+from mock_devices.daq_grpc import SimDaq, StandInBench
 
 GAIN_A_PER_V, M_PER_V = 2e-3, 5e-4  # not the driver defaults, so the scaling is really exercised
 
@@ -253,3 +252,21 @@ def test_start_trigger_order_matters_as_on_hardware(sim: SimDaq) -> None:
         ao.close()
         ai.close()
     channel.close()
+
+
+def test_with_the_simulated_world() -> None:
+    """The real world bench behind the DAQ: a finite record and a few continuous blocks."""
+    from mock_devices.world import Bench
+
+    world = Bench(ScaledClock(1000.0))
+    with SimDaq(world) as sim, DaqRig(grpc_target=sim.address) as rig:
+        fs = 1000.0
+        drive = 0.5 * np.sin(2 * np.pi * np.arange(5000) / fs)
+        out = rig.run_finite(drive, fs)
+        np.testing.assert_allclose(out["voltage_V"], drive, atol=5e-3)
+        assert np.all(np.isfinite(out["displacement_m"])) and np.ptp(out["displacement_m"]) > 0
+        rig.start_continuous(fs, drive_block=drive[:1000], buffer_s=30.0)
+        blocks = [rig.read_block(1000) for _ in range(3)]
+        rig.stop()
+        assert blocks[2]["t_s"][0] == pytest.approx(2.0)
+        assert sim.ao_output_V() == 0.0

@@ -24,8 +24,7 @@ from nidaqmx._stubs.nidaqmx_pb2_grpc import NiDAQmxServicer
 
 from drivers.daq import DaqRig
 from labrig.clock import ScaledClock
-from mock_devices.daq_grpc import DaqServicer, SimDaq
-from mock_devices.daq_sim import StandInBench
+from mock_devices.daq_grpc import DaqServicer, SimDaq, StandInBench
 
 DATA = Path(__file__).parent / "data" / "nidaqmx_grpc_methods.json"
 REGENERATE = "python tests/test_daq_grpc_contract.py --write"
