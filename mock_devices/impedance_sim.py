@@ -184,9 +184,10 @@ class ImpedanceAnalyzerSim:
 
     @staticmethod
     def _one_arg(r: Request) -> str:
-        if len(r.args) != 1 or not r.args[0]:
-            raise ScpiError(-109 if not r.args or not r.args[0] else -108,
-                            "Missing parameter" if not r.args or not r.args[0] else "Parameter not allowed")
+        if not r.args or not r.args[0]:
+            raise ScpiError(-109, "Missing parameter")
+        if len(r.args) > 1:
+            raise ScpiError(-108, "Parameter not allowed")
         return r.args[0]
 
     def _setting(self, header: str, parse: Callable[[str], Any], attr: str, show: Callable[[Any], str]) -> None:
@@ -226,9 +227,10 @@ class ImpedanceAnalyzerSim:
             raise ScpiError(-224, "Illegal parameter value")  # per-segment levels/times: not simulated
         if not 1 <= n <= self.max_segments:
             raise ScpiError(-222, "Data out of range")
-        if len(body) != 3 * n:
-            raise ScpiError(-109 if len(body) < 3 * n else -108,
-                            "Missing parameter" if len(body) < 3 * n else "Parameter not allowed")
+        if len(body) < 3 * n:
+            raise ScpiError(-109, "Missing parameter")
+        if len(body) > 3 * n:
+            raise ScpiError(-108, "Parameter not allowed")
         f_lo, f_hi = self.freq_range_Hz
         segments, last_stop = [], 0.0
         for a, b, pts in zip(body[0::3], body[1::3], body[2::3]):

@@ -137,11 +137,12 @@ class ScpiServer:
         self._errors: deque[tuple[int, str]] = deque()
         self._queue_size = queue_size
         self._lock = threading.RLock()  # one message at a time, like an instrument's parser
+        self._err_lock = threading.Lock()  # separate, so a fault can queue an error during a long *OPC?
         self._conn_lock = threading.Lock()
         self._listener: socket.socket | None = None
         self._conns: set[socket.socket] = set()
         self._threads: list[threading.Thread] = []
-        self.add("*CLS", lambda r: self._errors.clear())
+        self.add("*CLS", lambda r: self.clear_errors())
         self.add("SYSTem:ERRor[:NEXT]?", lambda r: self.pop_error())
 
     # ---- dispatch ---------------------------------------------------------------------------
@@ -152,15 +153,19 @@ class ScpiServer:
 
     def push_error(self, code: int, message: str) -> None:
         """Queue an error; a full queue keeps its head and ends in -350 as SCPI prescribes."""
-        with self._lock:
+        with self._err_lock:
             if len(self._errors) >= self._queue_size:
                 self._errors.pop()
                 self._errors.append((-350, "Queue overflow"))
             else:
                 self._errors.append((code, message))
 
+    def clear_errors(self) -> None:
+        with self._err_lock:
+            self._errors.clear()
+
     def pop_error(self) -> str:
-        with self._lock:
+        with self._err_lock:
             code, msg = self._errors.popleft() if self._errors else (0, "No error")
         return f'{code:+d},"{msg}"'
 

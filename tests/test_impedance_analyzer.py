@@ -194,10 +194,12 @@ def test_fault_error(an: ImpedanceAnalyzer, sim: ImpedanceAnalyzerSim) -> None:
     with pytest.raises(InstrumentErrorReply) as e:
         an.configure_log_sweep(1.0, 100.0, 3, ac_V=0.01)
     assert e.value.code == -310 and "System error" in e.value.detail
-    an.configure_log_sweep(1.0, 100.0, 3, ac_V=0.01)
-    sim.inject("error")  # queued during the sweep: measure reports it instead of returning data
+    an.configure_list([0.01], ac_V=0.01)  # 0.3 s of wall time
+    timer = threading.Timer(0.1, sim.inject, args=("error",))  # queued during the sweep
+    timer.start()
     with pytest.raises(InstrumentErrorReply) as e:
-        an.measure()
+        an.measure()  # reports it instead of returning the data
+    timer.join()
     assert e.value.code == -200
 
 
