@@ -177,7 +177,9 @@ class DaqRig:
             ao = self._new_task("ao")
             ao.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
                                                max_val=self.ao_range_V)
-            ao.timing.cfg_samp_clk_timing(fs, sample_mode=mode, samps_per_chan=len(drive) if mode == AcquisitionType.CONTINUOUS else n)
+            # continuous AO regenerates its buffer; finite AO puts out exactly the record's n samples
+            ao_samps = len(drive) if mode == AcquisitionType.CONTINUOUS else n
+            ao.timing.cfg_samp_clk_timing(fs, sample_mode=mode, samps_per_chan=ao_samps)
             ao.triggers.start_trigger.cfg_dig_edge_start_trig(f"/{self.device}/ai/StartTrigger", Edge.RISING)
             writer = AnalogSingleChannelWriter(ao.out_stream, auto_start=False)
             writer.verify_array_shape = False

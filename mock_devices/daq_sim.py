@@ -286,7 +286,8 @@ class SimDevice:
     def _begin(self, t: Task, t0: float) -> None:
         t.state, t.t0 = "running", t0
         if t.kind == "ai":
-            t.buf_size = t.buf_size or (t.samps if t.mode == FINITE else max(t.samps, _default_input_buffer(t.rate or 1.0)))
+            default = t.samps if t.mode == FINITE else max(t.samps, _default_input_buffer(t.rate or 1.0))
+            t.buf_size = t.buf_size or default
         term = f"/{self.name}/{t.kind}/StartTrigger"
         for o in self.tasks.values():
             if o.state == "armed" and o.trigger == term:

@@ -61,7 +61,8 @@ def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
     fs, drive = 1000.0, np.r_[_sine(500, 1000.0), np.zeros(500)]  # ends at rest: the bench lag decays
     with DaqRig(grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V) as good:
         ref = good.run_finite(drive, fs)
-    with DaqRig(grpc_target=sim.address, current_gain_A_per_V=2 * GAIN_A_PER_V, displacement_m_per_V=3 * M_PER_V) as off:
+    off_cal = {"current_gain_A_per_V": 2 * GAIN_A_PER_V, "displacement_m_per_V": 3 * M_PER_V}
+    with DaqRig(grpc_target=sim.address, **off_cal) as off:
         got = off.run_finite(drive, fs)
     np.testing.assert_allclose(got["current_A"], 2 * ref["current_A"], atol=5e-3 * GAIN_A_PER_V)
     np.testing.assert_allclose(got["displacement_m"], 3 * ref["displacement_m"], atol=5e-3 * M_PER_V)
