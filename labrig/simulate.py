@@ -1,0 +1,47 @@
+"""A fresh simulated bench in this process: the world, every simulated instrument on loopback, and a rig
+of real drivers connected to them over their real transports (what ``labrig run --sim`` uses)."""
+
+from __future__ import annotations
+
+import time
+from contextlib import contextmanager
+from typing import Iterator
+
+from drivers.transcript import Transcript
+from labrig.clock import ScaledClock
+from labrig.rig import Rig, open_rig, parse_rig
+from mock_devices.simbench import SimulatedInstruments
+from mock_devices.world import Bench, Effect
+
+DEFAULT_TIME_SCALE = 1000.0
+
+
+def rig_file_data(sims: SimulatedInstruments, clock: ScaledClock, preset: str) -> dict:
+    return {
+        "clock": {"time_scale": clock.time_scale, "epoch_wall": clock.epoch_wall},
+        "sample": {"preset": preset},
+        "instruments": sims.rig_tables(),
+    }
+
+
+@contextmanager
+def simulated_rig(
+    preset: str = "paper",
+    seed: int = 0,
+    effects: list[Effect] | None = None,
+    time_scale: float = DEFAULT_TIME_SCALE,
+    transcript: Transcript | None = None,
+    serial_transport: str = "tcp",
+) -> Iterator[tuple[Rig, SimulatedInstruments]]:
+    clock = ScaledClock(time_scale, time.time())
+    bench = Bench(clock, preset=preset, seed=seed, effects=effects)
+    sims = SimulatedInstruments(bench, serial_transport=serial_transport, seed=seed).start()
+    try:
+        cfg = parse_rig(rig_file_data(sims, clock, preset), "simulated bench")
+        rig = open_rig(cfg, clock, transcript)
+        try:
+            yield rig, sims
+        finally:
+            rig.close()
+    finally:
+        sims.stop()

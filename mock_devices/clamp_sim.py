@@ -1,0 +1,35 @@
+"""Simulated motorised clamp: the ASCII protocol of drivers/clamp.py, moving the bench's clamp."""
+
+from __future__ import annotations
+
+from mock_devices.bench_api import BenchView
+from mock_devices.serial_server import SimDevice
+
+
+class ClampSim(SimDevice):
+    def __init__(self, bench: BenchView, seed: int = 0, max_force_N: float = 98.0):
+        super().__init__(seed)
+        self.bench = bench
+        self.max_force_N = max_force_N
+        self.target_N = bench.clamp_force_now()
+
+    def respond(self, line: bytes) -> bytes:
+        text = line.decode("ascii", errors="replace").strip()
+        if self.fault == "error":
+            return f"ER,{text[:2]},02\r".encode()
+        if text == "F?":
+            return f"F,{self.target_N:+08.2f}\r".encode()
+        if text == "S":
+            self.bench.set_clamp_force(self.bench.clamp_force_now())
+            return b"OK\r"
+        if text.startswith("F"):
+            try:
+                f = float(text[1:])
+            except ValueError:
+                return b"ER,F,01\r"
+            if not 0 <= f <= self.max_force_N:
+                return b"ER,F,03\r"
+            self.target_N = f
+            self.bench.set_clamp_force(f)
+            return b"OK\r"
+        return f"ER,{text[:2]},01\r".encode()

@@ -1,0 +1,96 @@
+"""Protocol settings as pydantic models: unknown keys are errors, so a typo is never silently ignored."""
+
+from __future__ import annotations
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+
+class Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class ClampSettings(Strict):
+    pressures_kPa: list[float] = Field(default=[612.0, 1837.0, 3062.0, 4287.0], min_length=1)
+    tolerance_N: float = Field(0.5, gt=0)
+    hold_s: float = Field(2.0, ge=0)
+    timeout_s: float = Field(180.0, gt=0)
+    settle_s: float = Field(60.0, ge=0)
+
+    @model_validator(mode="after")
+    def _positive(self):
+        bad = [p for p in self.pressures_kPa if not p > 0]
+        if bad:
+            raise ValueError(f"pressures_kPa must be positive, got {bad[0]}")
+        return self
+
+
+class EisSettings(Strict):
+    f_start_Hz: float = Field(0.1, gt=0)
+    f_stop_Hz: float = Field(10000.0, gt=0)
+    points: int = Field(31, ge=2, le=1601)
+    ac_V: float = Field(0.01, gt=0)
+    bias_V: float = 0.0
+
+    @model_validator(mode="after")
+    def _order(self):
+        if self.f_stop_Hz <= self.f_start_Hz:
+            raise ValueError("f_stop_Hz must be above f_start_Hz")
+        return self
+
+
+class StepSettings(Strict):
+    amplitude_V: float = 1.0
+    on_s: float = Field(30.0, gt=0)
+    off_s: float = Field(30.0, ge=0)
+    fs_Hz: float = Field(500.0, gt=0)
+
+
+class HarmonicSettings(Strict):
+    amplitude_V: float = 1.0
+    frequency_Hz: float = Field(0.1, gt=0)
+    cycles: float = Field(3.0, gt=0)
+    fs_Hz: float = Field(200.0, gt=0)
+
+
+class SteppedSineSettings(Strict):
+    amplitude_V: float = 0.5
+    f_start_Hz: float = Field(0.1, gt=0)
+    f_stop_Hz: float = Field(20.0, gt=0)
+    points: int = Field(15, ge=1, le=200)
+    settle_cycles: float = Field(2.0, ge=0)
+    measure_cycles: float = Field(4.0, gt=0)
+    min_record_s: float = Field(2.0, ge=0)
+
+    @model_validator(mode="after")
+    def _order(self):
+        if self.f_stop_Hz < self.f_start_Hz:
+            raise ValueError("f_stop_Hz must not be below f_start_Hz")
+        return self
+
+
+class MultisineSettings(Strict):
+    rms_V: float = Field(0.25, gt=0)
+    f_min_Hz: float = Field(0.1, gt=0)
+    f_max_Hz: float = Field(20.0, gt=0)
+    period_s: float = Field(20.0, gt=0)
+    periods: int = Field(3, ge=2)
+    realisations: int = Field(2, ge=1)
+    fs_Hz: float = Field(200.0, gt=0)
+    seed: int = 1
+
+    @model_validator(mode="after")
+    def _band(self):
+        if self.f_max_Hz * 2.5 > self.fs_Hz:
+            raise ValueError("fs_Hz must be at least 2.5 x f_max_Hz")
+        if self.f_min_Hz * self.period_s < 1:
+            raise ValueError("period_s is too short for f_min_Hz (need period_s >= 1/f_min_Hz)")
+        return self
+
+
+class AmplitudeSeriesSettings(Strict):
+    amplitudes_V: list[float] = Field(default=[0.25, 0.5, 1.0, 1.5], min_length=2)
+    test: str = Field("harmonic", pattern="^(harmonic|step|multisine)$")
+    frequency_Hz: float = Field(0.5, gt=0)
+    cycles: float = Field(4.0, gt=0)
+    fs_Hz: float = Field(500.0, gt=0)
+    rest_s: float = Field(20.0, ge=0)

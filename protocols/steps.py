@@ -1,0 +1,134 @@
+"""What a protocol step asks the rig to do, and the plan-building helpers protocols share.
+
+A protocol is a plain generator of ``Step`` (Bluesky-style plans). The runner materialises it before
+anything moves, validates every step against the rig and its safety limits, announces the whole plan in
+``RunStart`` and then executes the steps in order.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Union
+
+import numpy as np
+
+from labrig import signals
+from labrig.events import daq_stream, eis_stream, force_stream
+
+
+@dataclass(frozen=True)
+class SetClamp:
+    """Bring the clamp to ``force_N`` (motor, or the operator is asked); the load cell must confirm it."""
+
+    force_N: float
+    tol_N: float
+    hold_s: float
+    timeout_s: float
+
+
+@dataclass(frozen=True)
+class Settle:
+    duration_s: float
+
+
+@dataclass(frozen=True)
+class Impedance:
+    freqs_Hz: tuple[float, ...]
+    ac_V: float
+    bias_V: float = 0.0
+
+
+@dataclass(frozen=True, eq=False)
+class Record:
+    """A hardware-timed drive at ``fs_Hz`` with voltage, current and displacement recorded on the same clock."""
+
+    drive_V: np.ndarray
+    fs_Hz: float
+
+    @property
+    def duration_s(self) -> float:
+        return self.drive_V.size / self.fs_Hz
+
+
+Action = Union[SetClamp, Settle, Impedance, Record]
+
+
+@dataclass(frozen=True, eq=False)
+class Step:
+    name: str  # unique in the run
+    kind: str
+    action: Action
+    metadata: dict[str, Any] = field(default_factory=dict)
+
+    def streams(self, force_rate_Hz: float) -> tuple:
+        """The streams this step writes: the load cell always, plus what its action produces."""
+        out = [force_stream(0)]  # the load cell's rate is its own: length unknown in advance
+        if isinstance(self.action, Record):
+            out.append(daq_stream(self.action.drive_V.size))
+        elif isinstance(self.action, Impedance):
+            out.append(eis_stream(len(self.action.freqs_Hz)))
+        return tuple(out)
+
+
+def step_duration(step: Step) -> float:
+    """Planned duration in simulated/real seconds (for the ETA and the store's chunking)."""
+    a = step.action
+    if isinstance(a, Record):
+        return a.duration_s
+    if isinstance(a, Settle):
+        return a.duration_s
+    if isinstance(a, SetClamp):
+        return min(a.timeout_s, 5 * a.hold_s + 10.0)
+    if isinstance(a, Impedance):
+        return float(sum(max(5.0 / f, 0.1) for f in a.freqs_Hz))
+    return 0.0
+
+
+def peak_drive(step: Step) -> float:
+    return float(np.max(np.abs(step.action.drive_V))) if isinstance(step.action, Record) else 0.0
+
+
+# ---------------------------------------------------------------------------------------------- builders
+
+
+def fs_for(frequency_Hz: float, floor_Hz: float = 200.0, cap_Hz: float = 2000.0, per_cycle: int = 50) -> float:
+    """A sample rate with >= ``per_cycle`` samples per drive cycle, in [floor, cap]."""
+    return float(min(max(floor_Hz, per_cycle * frequency_Hz), cap_Hz))
+
+
+def step_record(prefix: str, amplitude_V: float, on_s: float, off_s: float, fs_Hz: float, pre_s: float = 1.0, **meta) -> Step:
+    drive = signals.step(amplitude_V, pre_s + on_s + off_s, fs_Hz, t_on_s=pre_s, t_off_s=pre_s + on_s)
+    md = {"amplitude_V": amplitude_V, "on_s": on_s, "off_s": off_s, "pre_s": pre_s, "fs_Hz": fs_Hz, **meta}
+    return Step(f"{prefix}step_{amplitude_V:g}V", "step", Record(drive, fs_Hz), md)
+
+
+def sine_record(prefix: str, kind: str, amplitude_V: float, frequency_Hz: float, cycles: float, fs_Hz: float, settle_cycles: float = 0.0, **meta) -> Step:
+    """A sine record ending on a zero crossing (an integer number of cycles), then back to 0 V."""
+    total = settle_cycles + cycles
+    drive = np.append(signals.sine(amplitude_V, frequency_Hz, total / frequency_Hz, fs_Hz), 0.0)
+    md = {"amplitude_V": amplitude_V, "frequency_Hz": frequency_Hz, "cycles": cycles, "settle_cycles": settle_cycles, "fs_Hz": fs_Hz, **meta}
+    return Step(f"{prefix}{kind}_{frequency_Hz:g}Hz_{amplitude_V:g}V", kind, Record(drive, fs_Hz), md)
+
+
+def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float, period_s: float, periods: int, fs_Hz: float, seed: int, realisation: int, **meta) -> Step:
+    rng = np.random.default_rng([seed, realisation])
+    ms = signals.odd_multisine(rms_V, f_min_Hz, f_max_Hz, period_s, fs_Hz, rng, lines_per_octave=None)
+    drive = np.append(ms.repeat(periods), 0.0)
+    md = {
+        "rms_V": rms_V, "period_s": period_s, "periods": periods, "fs_Hz": fs_Hz, "realisation": realisation,
+        "f_min_Hz": f_min_Hz, "f_max_Hz": f_max_Hz, "excited_bins": ms.excited_bins.tolist(),
+        "detection_bins": ms.detection_bins.tolist(), **meta,
+    }
+    return Step(f"{prefix}multisine_r{realisation}", "multisine", Record(drive, fs_Hz), md)
+
+
+def log_freqs(f_start: float, f_stop: float, points: int) -> tuple[float, ...]:
+    return tuple(float(f"{f:.6g}") for f in np.geomspace(f_start, f_stop, points))
+
+
+def clamp_steps(prefix: str, pressure_kPa: float, clamp_area_m2: float, tol_N: float, hold_s: float, timeout_s: float, settle_s: float) -> Iterator[Step]:
+    force = pressure_kPa * 1e3 * clamp_area_m2
+    md = {"pressure_kPa": pressure_kPa, "force_N": force}
+    yield Step(f"{prefix}clamp", "clamp", SetClamp(force, tol_N, hold_s, timeout_s), md)
+    if settle_s > 0:
+        yield Step(f"{prefix}settle", "settle", Settle(settle_s), md)
