@@ -71,7 +71,7 @@ def _attributes(dev: SimDevice) -> dict[tuple[str, int], Callable[..., Any]]:
         ("Timing", 0x1300): lambda n, _: t(n).mode,
         ("Timing", 0x1310): lambda n, _: t(n).samps,
         ("Timing", 0x1344): lambda n, _: t(n).rate or 0.0,
-        ("Buffer", 0x186C): lambda n, _: t(n).buf_size or 0,
+        ("Buffer", 0x186C): lambda n, _: t(n).buf_user or t(n).buf_size or 0,
         ("Buffer", 0x186D): lambda n, _: 0 if t(n).ao_buf is None else t(n).ao_buf.shape[1],
         ("Chan", 0x187F): lambda n, c: CHAN_AI if t(n).kind == "ai" else CHAN_AO,
         ("Chan", 0x0695): lambda n, c: AI_VOLTAGE,
@@ -84,7 +84,7 @@ def _setters(dev: SimDevice) -> dict[tuple[str, int], Callable[[str, Any], None]
         dev.task(n).read_all_avail = bool(v)
 
     def in_buf(n: str, v: Any) -> None:
-        dev.task(n).buf_size = int(v)
+        dev.task(n).buf_user = int(v)
 
     return {("Read", 0x1215): read_all, ("Buffer", 0x186C): in_buf}
 

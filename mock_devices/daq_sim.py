@@ -79,7 +79,8 @@ class Task:
     state: str = "idle"  # idle | armed | running
     t0: float = 0.0  # simulated start time
     ao_buf: np.ndarray | None = None  # (chans, n) AO samples
-    buf_size: int | None = None  # input buffer set by the client
+    buf_size: int | None = None  # input buffer in use (set at start)
+    buf_user: int | None = None  # input buffer the client asked for
     read_all_avail: bool = False
     read_pos: int = 0
     gen_pos: int = 0
@@ -287,7 +288,7 @@ class SimDevice:
         t.state, t.t0 = "running", t0
         if t.kind == "ai":
             default = t.samps if t.mode == FINITE else max(t.samps, _default_input_buffer(t.rate or 1.0))
-            t.buf_size = t.buf_size or default
+            t.buf_size = t.buf_user or default
         term = f"/{self.name}/{t.kind}/StartTrigger"
         for o in self.tasks.values():
             if o.state == "armed" and o.trigger == term:
