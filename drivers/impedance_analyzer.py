@@ -65,7 +65,11 @@ class ImpedanceAnalyzer:
             self._raw = resource  # already open: a pyvisa resource or a ReplayMessages
         self._res = RecordingMessages(self._raw, transcript, device) if transcript is not None else self._raw
         self._set_timeout(self.timeout_s)
-        self._setup(reset)
+        try:
+            self._setup(reset)
+        except BaseException:
+            self._release()  # a refused connection must not leak the socket or our resource manager
+            raise
 
     # ---- connection -------------------------------------------------------------------------
 
@@ -271,6 +275,9 @@ class ImpedanceAnalyzer:
             self.safe()
         except InstrumentError as e:
             log.warning("%s: could not make the source safe on close: %s", self.device, e)
+        self._release()
+
+    def _release(self) -> None:
         self._closed = True
         try:
             self._raw.close()

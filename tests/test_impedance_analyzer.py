@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import socket
 import subprocess
 import sys
@@ -263,6 +264,28 @@ def test_replay_unrecorded_command_names_it() -> None:
     an.identify()
     with pytest.raises(ReplayMismatch, match=r"':SENS1:FREQ:STAR 2'"):
         an.configure_log_sweep(2.0, 1e4, 5, 0.01)
+
+
+def _session_with_reply(query: str, edit) -> ReplayMessages:
+    """The recorded session with the first reply to ``query`` rewritten by ``edit``."""
+    ex = Transcript.load(TRANSCRIPTS / "impedance_session.jsonl").for_device("impedance")
+    i = next(k for k, e in enumerate(ex) if e.op == "write" and e.payload == query.encode()) + 1
+    ex[i] = dataclasses.replace(ex[i], payload=edit(ex[i].payload.decode()).encode())
+    return ReplayMessages(ex)
+
+
+@pytest.mark.parametrize("query, edit", [
+    (":CALC1:DATA:RDAT?", lambda r: r.rsplit(",", 1)[0]),  # odd count: a value lost
+    (":CALC1:DATA:RDAT?", lambda r: r.rsplit(",", 2)[0]),  # one point short
+    (":SENS1:FREQ:DATA?", lambda r: r.rsplit(",", 1)[0]),  # fewer frequencies than configured points
+    (":CALC1:DATA:RDAT?", lambda r: r.replace("+5.0", "+5.O", 1)),  # a letter O for a zero
+    ("*OPC?", lambda r: "0"),
+])
+def test_malformed_replies(query: str, edit) -> None:
+    an = ImpedanceAnalyzer(_session_with_reply(query, edit))
+    an.identify()
+    with pytest.raises(MalformedReply):
+        an.spectrum(1.0, 1e4, 5, 0.01)
 
 
 def test_recordings_are_what_labrig_produces_now(tmp_path: Path) -> None:
