@@ -17,9 +17,16 @@ def app() -> None:
 
 
 def _register() -> None:
-    from labrig.cli import model
+    from labrig.cli import model, run_cmd
 
     app.add_command(model.model)
+    app.add_command(run_cmd.run_cmd)
+    app.add_command(run_cmd.sim_cmd)
+    try:
+        from labrig.cli import session_cmds
+    except ImportError:  # not there yet in this tree
+        return
+    session_cmds.register(app)
 
 
 def main(argv: list[str] | None = None) -> int:
