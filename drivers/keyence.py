@@ -16,10 +16,10 @@ from typing import Any
 
 from drivers.errors import InstrumentErrorReply, InstrumentTimeout, InvalidReading, MalformedReply, OverRange
 from drivers.serial_port import Command, SerialInstrument, SerialLike, io_errors
-from drivers.transcript import Transcript
 
 CR = b"\r"
 MM = 1e-3  # metres per millimetre
+MAX_REPLY = 64  # the longest real reply (M0) is 21 bytes
 
 # LK-G error codes (LK-G communication manual, "error response command format"); 02 is what the
 # rig's documentation shows for a refused measurement and is kept as such.
@@ -61,7 +61,11 @@ def analog_to_displacement(volts: Any, m_per_V: float, offset_m: float = 0.0) ->
 
 
 class KeyenceLKG(SerialInstrument):
-    """Keyence LK-G controller (LK-G3001 & co.). ``port``: pyserial URL, device path or open port."""
+    """Keyence LK-G controller (LK-G3001 & co.).
+
+    ``KeyenceLKG(port, *, name="keyence", transcript=None, timeout_s=0.5, baudrate=9600)``; ``port`` is
+    a pyserial URL, a device path or an open port object (e.g. ``ReplaySerial``).
+    """
 
     dialect = "LK-G"
     default_name = "keyence"
@@ -71,24 +75,15 @@ class KeyenceLKG(SerialInstrument):
     autozero_on = Command("V{out}", "Auto-zero ON: the present value of OUT<out> becomes zero.", out=OUTPUTS)
     autozero_off = Command("W{out}", "Auto-zero OFF: OUT<out> reads absolute again.", out=OUTPUTS)
 
-    def __init__(
-        self,
-        port: str | SerialLike,
-        *,
-        name: str | None = None,
-        transcript: Transcript | None = None,
-        timeout_s: float = 0.5,
-        baudrate: int = 9600,
-    ):
-        super().__init__(port, name=name, transcript=transcript, timeout_s=timeout_s, baudrate=baudrate)
-
     def query(self, request: bytes) -> list[str]:
         """Send one command, return the reply's fields after the echoed header."""
         with io_errors(self.name):
             self.port.reset_input_buffer()  # a late reply to an earlier timeout must not answer this one
         self._write(request + CR)
-        raw = self._read_until(CR, 64)
+        raw = self._read_until(CR, MAX_REPLY)
         cmd = request.decode("ascii")
+        if len(raw) >= MAX_REPLY and not raw.endswith(CR):
+            raise MalformedReply(self.name, f"{MAX_REPLY} bytes without CR in reply to {cmd}: {raw[:24]!r}...")
         if not raw.endswith(CR):
             what = "no reply" if not raw else f"incomplete reply {raw!r}"
             raise InstrumentTimeout(self.name, f"{what} to {cmd} within {self.timeout_s} s")

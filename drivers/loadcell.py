@@ -89,7 +89,7 @@ class LoadCell(SerialInstrument):
         stale_s: float = 0.5,
         timeout_s: float = 0.05,
         background: bool = True,
-        baudrate: int = 9600,
+        baudrate: int | None = None,
         max_line: int = 64,
     ):
         super().__init__(port, name=name, transcript=transcript, timeout_s=timeout_s, baudrate=baudrate)
@@ -106,8 +106,9 @@ class LoadCell(SerialInstrument):
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         if background:
-            with io_errors(self.name):
-                self.port.reset_input_buffer()  # frames queued before we opened are old
+            if isinstance(port, str):  # frames queued in a port we just opened are old
+                with io_errors(self.name):
+                    self.port.reset_input_buffer()
             self._thread = threading.Thread(target=self._reader, name=f"{self.name}-reader", daemon=True)
             self._thread.start()
 
@@ -115,7 +116,10 @@ class LoadCell(SerialInstrument):
     def _reader(self) -> None:
         while not self._stop.is_set():
             try:
-                chunk = self._read_until(b"\n", self.max_line)
+                with io_errors(self.name):
+                    waiting = self.port.in_waiting
+                    # bulk when the port says how much it holds (tty), else line by line (socket says 0/1)
+                    chunk = bytes(self.port.read(waiting)) if waiting > 1 else self._read_until(b"\n", self.max_line)
             except InstrumentError as e:
                 with self._cond:
                     self._error = e

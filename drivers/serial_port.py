@@ -80,6 +80,7 @@ class SerialInstrument:
     """Base of the serial drivers: owns the port, maps errors, closes safely, context manager."""
 
     default_name = "serial"
+    default_baudrate = 9600
 
     def __init__(
         self,
@@ -88,11 +89,14 @@ class SerialInstrument:
         name: str | None = None,
         transcript: Transcript | None = None,
         timeout_s: float = 0.5,
+        baudrate: int | None = None,
         **settings: Any,
     ):
+        """``port``: pyserial URL, device path or open port; ``settings``: more pyserial options (8N1 default)."""
         self.name = name or self.default_name
         self.timeout_s = timeout_s
-        self.port = open_serial(port, device=self.name, timeout_s=timeout_s, transcript=transcript, **settings)
+        baud = baudrate or self.default_baudrate
+        self.port = open_serial(port, device=self.name, timeout_s=timeout_s, transcript=transcript, baudrate=baud, **settings)
         self.closed = False
 
     def _write(self, data: bytes) -> None:

@@ -16,12 +16,9 @@ Regenerate the recorded traffic the tests replay::
 
 from __future__ import annotations
 
-import argparse
-import time
-from typing import Any
 
 from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
 
 G_N = 9.80665  # N per kgf
 
@@ -109,27 +106,15 @@ def record_demo(path: str) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m mock_devices.loadcell_sim", description=__doc__.split("\n")[0])
-    ap.add_argument("--record", metavar="PATH", help="record the demo exchange to a JSONL transcript and exit")
-    ap.add_argument("--serve", choices=("pty", "tcp"), help="serve a fixed-bench simulator until Ctrl-C")
-    ap.add_argument("--port", type=int, default=0)
-    ap.add_argument("--force-N", type=float, default=9.8)
-    args = ap.parse_args(argv)
-    if args.record:
-        print(f"{record_demo(args.record)} exchanges -> {args.record}")
-        return 0
-    if args.serve:
-        bench: Any = FixedBench(force_N=args.force_N)
-        with serve(LoadCellSim(bench), args.serve, args.port) as server:
-            print(server.address, flush=True)
-            try:
-                while True:
-                    time.sleep(1.0)
-            except KeyboardInterrupt:
-                pass
-        return 0
-    ap.print_help()
-    return 2
+    return sim_main(
+        argv,
+        prog="python -m mock_devices.loadcell_sim",
+        doc=__doc__ or "",
+        record=record_demo,
+        make_device=lambda value: LoadCellSim(FixedBench(force_N=value)),
+        value_flag="--force-N",
+        default_value=9.8,
+    )
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@ pyserial like any tty, and ``socket://127.0.0.1:PORT`` is pyserial's own URL han
 
 from __future__ import annotations
 
+import argparse
 import os
 import random
 import select
@@ -20,7 +21,7 @@ import socket
 import threading
 import time
 import tty
-from typing import Literal
+from typing import Callable, Literal
 
 COMMON_FAULTS = frozenset({"disconnect", "timeout", "garbage"})
 
@@ -383,3 +384,36 @@ def serve(device: SimDevice, transport: Literal["pty", "tcp"] = "tcp", port: int
     if transport == "tcp":
         return TcpSerialServer(device, port).start()
     raise ValueError(f"transport must be 'pty' or 'tcp', not {transport!r}")
+
+
+def sim_main(
+    argv: list[str] | None,
+    *,
+    prog: str,
+    doc: str,
+    record: Callable[[str], int],
+    make_device: Callable[[float], SimDevice],
+    value_flag: str,
+    default_value: float,
+) -> int:
+    """The command line every serial simulator shares: ``--record PATH`` or ``--serve pty|tcp``."""
+    ap = argparse.ArgumentParser(prog=prog, description=doc.split("\n")[0])
+    ap.add_argument("--record", metavar="PATH", help="record the demo exchange to a JSONL transcript and exit")
+    ap.add_argument("--serve", choices=("pty", "tcp"), help="serve a fixed-bench simulator until Ctrl-C")
+    ap.add_argument("--port", type=int, default=0, help="TCP port (0 = any free one)")
+    ap.add_argument(value_flag, type=float, default=default_value, dest="value", help="fixed bench value")
+    args = ap.parse_args(argv)
+    if args.record:
+        print(f"{record(args.record)} exchanges -> {args.record}")
+        return 0
+    if args.serve:
+        with serve(make_device(args.value), args.serve, args.port) as server:
+            print(server.address, flush=True)
+            try:
+                while True:
+                    time.sleep(1.0)
+            except KeyboardInterrupt:
+                pass
+        return 0
+    ap.print_help()
+    return 2

@@ -1,0 +1,242 @@
+"""Load-cell indicator driver against its simulated stream on a real pty and on socket://, plus replay."""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+
+import pytest
+
+from drivers import errors
+from drivers.loadcell import LoadCell, parse_frame
+from drivers.transcript import Exchange, ReplaySerial, Transcript
+from labrig.clock import ScaledClock
+from mock_devices.loadcell_sim import LoadCellSim
+from mock_devices.serial_server import serve
+
+TRANSCRIPT = Path(__file__).parent / "data" / "transcripts" / "loadcell_basic.jsonl"
+G_N = 9.80665  # standard gravity, N per kgf (independent of the driver's constant)
+HALF_COUNT_N = 0.005 * G_N + 1e-9  # frames carry 0.01 kgf
+
+
+class Bench:
+    """Stand-in bench: clamp force ``force(t)`` of simulated time t on a 1000x clock."""
+
+    def __init__(self, force_N: float = 0.0):
+        self.clock = ScaledClock(1000.0)
+        self.force = lambda t: force_N
+
+    def clamp_force_now(self) -> float:
+        return self.force(self.clock.now())
+
+
+def _fresh(lc: LoadCell, expect_N: float | None = None, wall_s: float = 1.0):
+    """Reading after three more frames (one may be in flight, one unstable after a change) or, given
+    ``expect_N``, once a stable frame within half a count of it arrived (a loaded CI box may delay the
+    reader thread; a wrong value still fails after ``wall_s``)."""
+    seq = lc._seq
+    deadline = time.monotonic() + wall_s
+    while time.monotonic() < deadline:
+        if lc._seq >= seq + 3:
+            r = lc.force()
+            if expect_N is None or (r.stable and abs(r.force_N - expect_N) <= HALF_COUNT_N):
+                return r
+        time.sleep(0.002)
+    return lc.force()
+
+
+@pytest.fixture(params=["pty", "tcp"])
+def rig(request):
+    bench = Bench(4.9)
+    sim = LoadCellSim(bench)
+    with serve(sim, request.param) as server, LoadCell(server.address, stale_s=0.15) as lc:
+        yield bench, sim, lc, server
+
+
+@pytest.mark.parametrize("f_N", [4.9, 12.3456, 0.0, -0.7, 97.9])
+def test_force_matches_bench_within_resolution(rig, f_N):
+    bench, _, lc, _ = rig
+    bench.force = lambda t: f_N
+    reading = _fresh(lc, f_N)
+    assert reading.force_N == pytest.approx(f_N, abs=HALF_COUNT_N)
+    assert reading.stable
+
+
+def test_newton_frames():
+    bench = Bench(12.3456)
+    with serve(LoadCellSim(bench, unit="N"), "tcp") as server, LoadCell(server.address, stale_s=0.15) as lc:
+        assert lc.latest().raw == b"ST,GS,+0012.35N\r\n" or lc.latest().raw.endswith(b"N\r\n")
+        assert _fresh(lc, 12.3456).force_N == pytest.approx(12.3456, abs=0.005 + 1e-9)
+
+
+def test_wall_frame_rate_is_capped_at_1000x(rig):
+    _, sim, lc, _ = rig
+    assert sim.stream_interval_s >= 1 / 200
+    seq0, t0 = lc._seq, time.monotonic()
+    time.sleep(0.2)
+    assert lc._seq - seq0 <= 200 * (time.monotonic() - t0) + 2
+
+
+def test_wait_stable_waits_out_the_ramp(rig):
+    bench, _, lc, _ = rig
+    clock = bench.clock
+    t_end = clock.now() + 60.0  # 60 simulated seconds of ramp = 60 ms wall
+    bench.force = lambda t: 9.8 * min(1.0, max(0.0, 1 - (t_end - t) / 60.0))
+    reading = lc.wait_stable(9.8, 0.1, hold_s=10.0, timeout_s=400.0, clock=clock)
+    assert clock.now() >= t_end + 10.0 - 1e-6  # not before the ramp ended and the hold passed
+    assert reading.stable and reading.force_N == pytest.approx(9.8, abs=0.1)
+
+
+def test_wait_stable_times_out_off_target(rig):
+    bench, _, lc, _ = rig
+    with pytest.raises(errors.InstrumentTimeout, match="did not hold"):
+        lc.wait_stable(20.0, 0.1, hold_s=1.0, timeout_s=50.0, clock=bench.clock)
+
+
+def test_wait_stable_rejects_an_unsteady_force_on_target(rig):
+    bench, _, lc, _ = rig
+    bench.force = lambda t: 9.8 + 0.05 * math.sin(0.7 * t)  # within tolerance, never steady
+    with pytest.raises(errors.InstrumentTimeout, match="unstable|stable"):
+        lc.wait_stable(9.8, 0.2, hold_s=30.0, timeout_s=200.0, clock=bench.clock)
+
+
+def test_tare_and_zero(rig):
+    bench, _, lc, _ = rig
+    lc.tare()
+    r = _fresh(lc, 0.0)
+    assert r.force_N == pytest.approx(0.0, abs=HALF_COUNT_N) and lc.latest().kind == "NT"
+    lc.zero()  # 4.9 N is inside the zero range
+    assert lc.latest().kind == "GS"
+    bench.force = lambda t: 4.9 + 2.0
+    assert _fresh(lc, 2.0).force_N == pytest.approx(2.0, abs=HALF_COUNT_N)
+
+
+def test_zero_refused_under_load_is_reported(rig):
+    bench, _, lc, _ = rig
+    bench.force = lambda t: 50.0
+    _fresh(lc)
+    with pytest.raises(errors.InstrumentTimeout, match="zero"):
+        lc.zero(confirm_s=0.1)
+
+
+@pytest.mark.parametrize("fault,exc", [
+    ("overrange", errors.Overload),
+    ("timeout", errors.StaleStream),
+    ("garbage", errors.MalformedReply),
+    ("disconnect", errors.Disconnected),
+])
+def test_each_fault_gives_its_exception(rig, fault, exc):
+    _, sim, lc, _ = rig
+    assert _fresh(lc, 4.9).force_N == pytest.approx(4.9, abs=HALF_COUNT_N)
+    sim.inject(fault)
+    t0 = time.monotonic()
+    with pytest.raises(exc):
+        while time.monotonic() - t0 < 2.0:  # at most stale_s plus a frame, never a hang
+            lc.force()
+            time.sleep(0.005)
+    assert time.monotonic() - t0 < 1.0
+    if fault != "disconnect":
+        sim.clear_fault()
+        assert _fresh(lc, 4.9).force_N == pytest.approx(4.9, abs=HALF_COUNT_N)  # recovers
+
+
+def test_real_overload_above_98N(rig):
+    bench, _, lc, _ = rig
+    bench.force = lambda t: 120.0
+    with pytest.raises(errors.Overload):
+        _fresh(lc)
+
+
+def test_noise_between_frames_is_skipped(rig):
+    bench, sim, lc, _ = rig
+    sim.inject("noise")
+    for f_N in (3.0, 7.5):
+        bench.force = lambda t, f=f_N: f
+        assert _fresh(lc, f_N).force_N == pytest.approx(f_N, abs=HALF_COUNT_N)
+    assert lc.bytes_skipped > 0
+
+
+@pytest.mark.parametrize("fault,exc", [("garbage", errors.MalformedReply), ("timeout", errors.StaleStream)])
+def test_dead_from_the_start(fault, exc):
+    sim = LoadCellSim(Bench(1.0))
+    sim.inject(fault)
+    with serve(sim, "pty") as server, LoadCell(server.address, stale_s=0.1) as lc:
+        t0 = time.monotonic()
+        with pytest.raises(exc):
+            lc.force()
+        assert time.monotonic() - t0 < 0.5
+
+
+# -- parsing ----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("line,status,kind,force", [
+    (b"ST,GS,+0012.34Kg\r\n", "ST", "GS", 12.34 * G_N),
+    (b"US,NT,-0000.05Kg\r\n", "US", "NT", -0.05 * G_N),
+    (b"ST,GS,+0012.34 N\r\n", "ST", "GS", 12.34),
+    (b"ST,GS,+   1.50kg\r\n", "ST", "GS", 1.5 * G_N),
+])
+def test_parse_frame(line, status, kind, force):
+    f = parse_frame(line)
+    assert (f.status, f.kind) == (status, kind) and f.force_N == pytest.approx(force)
+
+
+@pytest.mark.parametrize("line", [b"ST,GS,+0012.34Kg", b"XX,GS,+0012.34Kg\r\n", b"ST,GS,+12.34Kg\r\n",
+                                  b"\x90ST,GS,+0012.34Kg\r\n", b"ST,GS,+00.2.34Kg\r\n", b"ST,GS,+0012.34lb\r\n"])
+def test_parse_frame_rejects(line):
+    assert parse_frame(line) is None
+
+
+def test_overload_frame_with_no_number():
+    f = parse_frame(b"OL,GS,+   .   Kg\r\n")
+    assert f is not None and f.status == "OL" and math.isnan(f.force_N)
+
+
+def _stream(data: bytes, **kw) -> LoadCell:
+    return LoadCell(ReplaySerial([Exchange(0, "loadcell", "read", data)]), background=False, **kw)
+
+
+def test_resync_after_garbage_and_overlong_lines():
+    junk = b"\x90\x91\x92" * 40  # no LF: longer than a line, dropped
+    lc = _stream(b"ST,GS,+00" + junk + b"\r\nST,GS,+0001.00Kg\r\n\xa0\xa1ST,GS,+0009.99Kg\r\nST,GS,+0002.00Kg\r\n")
+    assert lc.force() == (pytest.approx(2.0 * G_N), True)
+    assert lc.bytes_skipped > len(junk)
+
+
+def test_only_garbage_is_malformed_not_a_hang():
+    with pytest.raises(errors.MalformedReply):
+        _stream(b"\x90\x91\x92\r\n" * 20).force()
+    with pytest.raises(errors.StaleStream):
+        _stream(b"").force()
+
+
+# -- recorded traffic --------------------------------------------------------------------------------
+
+
+def test_recording_captures_the_stream_and_commands(rig):
+    _, _, first, server = rig
+    first.close()  # a serial line has one client
+    tr = Transcript()
+    with LoadCell(server.address, transcript=tr, stale_s=0.5) as lc:
+        lc.force()
+        lc.tare()
+    data = b"".join(e.payload for e in tr if e.op == "read")
+    assert [e.payload for e in tr if e.op == "write"] == [b"T\r\n"]
+    assert b"ST,GS,+0000.50Kg\r\n" in data and b"ST,NT,+0000.00Kg\r\n" in data
+
+
+def test_replay_of_recorded_session():
+    lc = LoadCell(ReplaySerial(Transcript.load(TRANSCRIPT).for_device("loadcell")), background=False)
+    assert lc.force() == (pytest.approx(0.5 * G_N), True)
+    lc.zero()
+    assert lc.force() == (pytest.approx(1.0 * G_N), True)  # last frame before the tare: load added
+    lc.tare()
+    assert lc.force() == (pytest.approx(0.0), True) and lc.latest().kind == "NT"
+    assert lc.port.exhausted
+
+
+def test_replay_names_an_unrecorded_command():
+    lc = LoadCell(ReplaySerial(Transcript.load(TRANSCRIPT).for_device("loadcell")), background=False)
+    with pytest.raises(errors.ReplayMismatch, match=r"T\\r\\n"):
+        lc.tare()  # the recording zeroes first
