@@ -10,8 +10,11 @@ Units used throughout (the interpretation of seed 000's Table 1 is in docs/model
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
-from typing import Literal
+import math
+from dataclasses import dataclass, replace
+from typing import ClassVar, Literal
+
+import numpy as np
 
 
 @dataclass(frozen=True)
@@ -144,22 +147,49 @@ TABLE3 = {"E_MPa": 313.0, "xi1": 0.18, "mu_v": 0.02, "gamma": 0.14, "alpha": 0.1
 
 @dataclass(frozen=True)
 class HammersteinParams:
-    """Seed 001 grey box: nonlinear electric stage, then a linear current -> displacement stage (DESIGN.md 4).
+    """Seed 001 grey box (its Fig. 2): a nonlinear electric stage V_in -> I_abs, then a linear I_abs -> delta stage.
 
-    Electric stage: V_in -> R_s in series with [C_dl (or CPE Q, n) || nonlinear conductance i_nl(v_c)].
-    Mechanical stage: delta = K/(s + eps) * wn^2/(s^2 + 2 zeta wn s + wn^2) * I_abs.
+    Electric stage (seed 001 Fig. 3, DESIGN.md 4): R_s in series with [C_dl(v) || i_nl(v)], state v = v_c;
+    the nonlinear law ``law`` is one of labrig.physics.hammerstein.LAWS, which lists the parameters it uses.
+    Mechanical stage: delta(s) = K/(s + eps) * wn^2/(s^2 + 2 zeta wn s + wn^2) * I_abs(s).
+    Defaults: seed 001's 20 x 5 x 0.2 mm strip in air (a few mA/V, first mode 25 Hz, ~0.5 mm/V slow).
     """
 
-    R_s: float = 20.0  # ohm
-    C_dl: float = 4e-3  # F
     law: Literal["poly", "butler_volmer", "varcap"] = "poly"
-    g1: float = 2e-3  # S, linear leak (poly law)
-    g3: float = 1e-3  # S/V^2, cubic term (poly law)
-    i0: float = 2e-4  # A, exchange current (Butler-Volmer law)
-    v_t: float = 0.15  # V, Tafel voltage (Butler-Volmer law)
-    c2: float = 0.3  # 1/V^2, voltage-dependent capacitance C(v) = C_dl (1 + c2 v^2) (varcap law)
-    K: float = 2.0  # m/(A*s) gain of the leaky integrator
-    eps: float = 0.2  # 1/s leak
-    wn: float = 2 * 3.141592653589793 * 25.0  # rad/s, first mode in air
-    zeta: float = 0.08
-    extras: dict = field(default_factory=dict)
+    R_s: float = 150.0  # ohm, electrode + contact series resistance
+    C_dl: float = 2e-3  # F, double-layer capacitance (tau = R_s C_dl = 0.3 s)
+    g1: float = 5e-4  # S, linear leak (all laws)
+    g3: float = 1e-3  # A/V^3 (= S/V^2), cubic conductance (poly)
+    i0: float = 2e-4  # A, exchange current (butler_volmer)
+    v_t: float = 0.25  # V, effective thermal voltage n R T / F of the sinh branch (butler_volmer)
+    c2: float = 0.3  # 1/V^2, C(v) = C_dl (1 + c2 v^2) (varcap)
+    K: float = 0.25  # m/C = m/(A s), bending per charge of the leaky integrator
+    eps: float = 0.2  # 1/s, integrator leak (back-relaxation)
+    wn: float = 2 * math.pi * 25.0  # rad/s, first mode in air
+    zeta: float = 0.05  # damping ratio of the first mode
+
+    # (lower, upper, scale): the box searched by labrig.fit.hammerstein; "log" = searched in log x.
+    BOUNDS: ClassVar[dict[str, tuple[float, float, str]]] = {
+        "R_s": (5.0, 2000.0, "log"),
+        "C_dl": (1e-4, 5e-2, "log"),
+        "g1": (1e-6, 1e-2, "log"),
+        "g3": (0.0, 2e-2, "lin"),
+        "i0": (1e-6, 1e-2, "log"),
+        "v_t": (0.02, 2.0, "log"),
+        "c2": (0.0, 5.0, "lin"),
+        "K": (1e-3, 1e2, "log"),
+        "eps": (1e-3, 10.0, "log"),
+        "wn": (2 * math.pi * 2.0, 2 * math.pi * 300.0, "log"),
+        "zeta": (0.005, 0.8, "log"),
+    }
+
+    def vector(self, names: tuple[str, ...] | list[str]) -> np.ndarray:
+        """The values of ``names`` as a float vector (the column order of simulate_batch's theta)."""
+        return np.array([float(getattr(self, n)) for n in names])
+
+    def with_vector(self, names: tuple[str, ...] | list[str], values) -> "HammersteinParams":
+        """A copy with ``names`` set from ``values`` (inverse of :meth:`vector`)."""
+        return replace(self, **{n: float(x) for n, x in zip(names, values, strict=True)})
+
+    def as_dict(self, names: tuple[str, ...] | list[str]) -> dict[str, float]:
+        return {n: float(getattr(self, n)) for n in names}
