@@ -134,12 +134,15 @@ class LoadCell(SerialInstrument):
         """Parse everything the port holds now (manual mode; the reader thread does this itself)."""
         if self._thread is not None:
             return
-        while True:
+        budget = 1 << 16  # a live stream faster than we parse must not keep us here forever
+        while budget > 0:
             with io_errors(self.name):
                 waiting = self.port.in_waiting
             if not waiting:
                 return
-            self._feed(self._read_until(b"\n", self.max_line))
+            chunk = self._read_until(b"\n", self.max_line)
+            budget -= len(chunk) or 1
+            self._feed(chunk)
 
     def _feed(self, chunk: bytes) -> None:
         now = time.monotonic()
@@ -244,17 +247,19 @@ class LoadCell(SerialInstrument):
         if confirm_s is None:
             return
         deadline = time.monotonic() + confirm_s
-        while True:
-            if any(confirmed(f) for f in self._frames_after(seq0)):
-                return
+        while not any(confirmed(f) for f in self._frames_after(seq0)):
             if self._error is not None:
                 raise self._error
             left = deadline - time.monotonic()
             if left <= 0:
                 raise InstrumentTimeout(self.name, f"{cmd.name} ({cmd.template}) not confirmed by the stream within {confirm_s:g} s")
-            self._wait_frame(self._seq, left)
-            if self._thread is None and not self._frames_after(seq0):
-                time.sleep(min(left, 0.01))
+            if self._thread is not None:
+                self._wait_frame(self._seq, left)
+            else:
+                before = self._seq
+                self.pump()
+                if self._seq == before:
+                    time.sleep(min(left, 0.005))
 
     def zero(self, confirm_s: float | None = 1.0) -> None:
         """Zero the gross reading; confirmed when a later frame reads within 2 counts of zero."""

@@ -5,7 +5,7 @@ turn pyserial's failures into the errors of ``drivers.errors``, and declare comm
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Any, Iterator
+from typing import Any, Iterator, Self
 
 import serial
 
@@ -129,7 +129,7 @@ class SerialInstrument:
             except (serial.SerialException, OSError, _TermiosError):
                 pass
 
-    def __enter__(self) -> "SerialInstrument":
+    def __enter__(self) -> Self:
         return self
 
     def __exit__(self, *exc: object) -> None:

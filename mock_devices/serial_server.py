@@ -17,6 +17,7 @@ import argparse
 import os
 import random
 import select
+import signal
 import socket
 import threading
 import time
@@ -386,6 +387,10 @@ def serve(device: SimDevice, transport: Literal["pty", "tcp"] = "tcp", port: int
     raise ValueError(f"transport must be 'pty' or 'tcp', not {transport!r}")
 
 
+def _interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
+
+
 def sim_main(
     argv: list[str] | None,
     *,
@@ -407,6 +412,7 @@ def sim_main(
         print(f"{record(args.record)} exchanges -> {args.record}")
         return 0
     if args.serve:
+        signal.signal(signal.SIGTERM, _interrupt)  # stop cleanly on kill as on Ctrl-C
         with serve(make_device(args.value), args.serve, args.port) as server:
             print(server.address, flush=True)
             try:
