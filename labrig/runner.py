@@ -187,7 +187,8 @@ class Runner:
         an = self.rig.analyzer
         an.configure_list(np.array(a.freqs_Hz), a.ac_V, a.bias_V)
         f, z = an.measure()
-        self.emit(Block(self.uid, index, "eis", {"f_Hz": f, "z_re_ohm": z.real, "z_im_ohm": z.imag}))
+        cols = {"f_Hz": f, "z_re_ohm": z.real, "z_im_ohm": z.imag}
+        self.emit(Block(self.uid, index, "eis", {k: np.ascontiguousarray(v, float) for k, v in cols.items()}))
         return {"points": int(f.size), "z_min_ohm": float(np.min(np.abs(z)))}
 
     def _record(self, index: int, a: Record) -> dict[str, Any]:
@@ -198,7 +199,8 @@ class Runner:
         cols = {"t_s": out["t_s"], "v_V": out["voltage_V"], "i_A": out["current_A"], "disp_m": out["displacement_m"]}
         # the data measured so far is stored before a trip is declared: nothing measured is lost
         for k, start in enumerate(range(0, a.drive_V.size, BLOCK_ROWS)):
-            self.emit(Block(self.uid, index, "daq", {c: v[start : start + BLOCK_ROWS] for c, v in cols.items()}, seq=k))
+            block = {c: np.ascontiguousarray(v[start : start + BLOCK_ROWS], float) for c, v in cols.items()}
+            self.emit(Block(self.uid, index, "daq", block, seq=k))
         if i_peak > rig.limits.max_current_A:
             raise SafetyTrip(f"current {i_peak:.3g} A exceeded safety.max_current_A = {rig.limits.max_current_A:g} A")
         laser_after = rig.laser.read_displacement()

@@ -58,6 +58,7 @@ class SteppedSineSettings(Strict):
     f_stop_Hz: float = Field(20.0, gt=0)
     points: int = Field(15, ge=1, le=200)
     settle_cycles: float = Field(2.0, ge=0)
+    settle_min_s: float = Field(2.0, ge=0)  # the first mode's ring-down (~0.3 s in water) must be over
     measure_cycles: float = Field(4.0, gt=0)
     min_record_s: float = Field(2.0, ge=0)
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Iterator
 
+import numpy as np
+
 from protocols.config import (
     AmplitudeSeriesSettings,
     ClampSettings,
@@ -35,7 +37,8 @@ def harmonic_steps(s: HarmonicSettings, prefix: str = "", **meta) -> Iterator[St
 def stepped_sine_steps(s: SteppedSineSettings, prefix: str = "", **meta) -> Iterator[Step]:
     for f in log_freqs(s.f_start_Hz, s.f_stop_Hz, s.points):
         cycles = max(s.measure_cycles, round(s.min_record_s * f))  # fast lines get more cycles, not fewer seconds
-        yield sine_record(prefix, "stepped_sine", s.amplitude_V, f, cycles, fs_for(f), settle_cycles=s.settle_cycles, **meta)
+        settle = max(s.settle_cycles, float(np.ceil(s.settle_min_s * f)))
+        yield sine_record(prefix, "stepped_sine", s.amplitude_V, f, cycles, fs_for(f), settle_cycles=settle, **meta)
 
 
 def multisine_steps(s: MultisineSettings, prefix: str = "", **meta) -> Iterator[Step]:

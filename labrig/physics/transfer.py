@@ -55,24 +55,31 @@ def damping_ratio(omega: np.ndarray, sp: Specimen) -> np.ndarray:
     return 0.5 * (sp.mechanics.gamma + md * hydro.gamma_rect(omega, g.width, sp.fluid).imag / mu_v(omega, sp))
 
 
-@lru_cache(maxsize=512)
+@lru_cache(maxsize=1024)
+def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float) -> tuple[np.ndarray, ...]:
+    """Roots and mode shapes on the quadrature nodes: they depend on K_t bar and the geometry only."""
+    L = length
+    bl = beam.beta_L_roots(Kt_bar, n_modes)
+    u, w = np.polynomial.legendre.leggauss(QUAD_NODES)
+    nodes, weights = 0.5 * L * (u + 1.0), 0.5 * L * w
+    phi = np.stack([beam.mode_shape(nodes, L, b, Kt_bar) for b in bl], axis=1)
+    phi2 = np.stack([beam.mode_shape(nodes, L, b, Kt_bar, 2) for b in bl], axis=1)
+    norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
+    phi_s = np.array([beam.mode_shape(np.array([x_sensor]), L, b, Kt_bar)[0] for b in bl]) / norm
+    return bl, nodes, weights, phi / norm, phi2 / norm, phi_s
+
+
+@lru_cache(maxsize=1024)
 def modal_set(sp: Specimen) -> ModalSet:
     g, m = sp.geometry, sp.mechanics
     L = g.length
-    bl = beam.beta_L_roots(sp.Kt_bar, sp.n_modes)
+    bl, nodes, weights, phi, phi2, phi_s = _shapes(float(sp.Kt_bar), int(sp.n_modes), L, float(sp.x_sensor))
     omega = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(1.0, sp), L)
     for _ in range(30):  # fixed point: the added mass depends on the frequency it loads
         new = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(omega, sp), L)
         if np.allclose(new, omega, rtol=1e-12):
             break
         omega = new
-    u, w = np.polynomial.legendre.leggauss(QUAD_NODES)
-    nodes, weights = 0.5 * L * (u + 1.0), 0.5 * L * w
-    phi = np.stack([beam.mode_shape(nodes, L, b, sp.Kt_bar) for b in bl], axis=1)
-    phi2 = np.stack([beam.mode_shape(nodes, L, b, sp.Kt_bar, 2) for b in bl], axis=1)
-    norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
-    phi, phi2 = phi / norm, phi2 / norm
-    phi_s = np.array([beam.mode_shape(np.array([sp.x_sensor]), L, b, sp.Kt_bar)[0] for b in bl]) / norm
     muv = mu_v(omega, sp)
     return ModalSet(bl, omega, damping_ratio(omega, sp), muv, muv * L, phi_s, nodes, weights, phi, phi2)
 

@@ -1,0 +1,140 @@
+"""``labrig run`` (a protocol on the simulated or a real bench) and ``labrig sim`` (serve the simulators)."""
+
+from __future__ import annotations
+
+import signal
+import threading
+import time
+from contextlib import ExitStack
+from pathlib import Path
+from typing import Any
+
+import click
+import tomli_w
+
+from labrig.errors import BadInput
+from labrig.simulate import DEFAULT_TIME_SCALE
+
+
+def _effects(scenario: str, seed: int) -> list[Any]:
+    from mock_devices import scenarios
+
+    try:
+        return scenarios.effects_for(scenario, seed)
+    except KeyError as exc:
+        raise BadInput(f"--scenario: {exc.args[0]}") from None
+
+
+class _Interrupts:
+    """First Ctrl-C: stop at the next safe point. Second: stop now (KeyboardInterrupt)."""
+
+    def __init__(self, stop: Any):
+        self.stop, self.count = stop, 0
+
+    def __enter__(self) -> "_Interrupts":
+        if threading.current_thread() is threading.main_thread():
+            self._old = signal.signal(signal.SIGINT, self._handle)
+            self._old_term = signal.signal(signal.SIGTERM, self._handle)
+        return self
+
+    def _handle(self, signum: int, frame: Any) -> None:
+        self.count += 1
+        if self.count == 1 and signum == signal.SIGINT:
+            click.echo("\nstopping at the next safe point (Ctrl-C again to stop now)", err=True)
+            self.stop()
+        else:
+            raise KeyboardInterrupt
+
+    def __exit__(self, *exc: object) -> None:
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, self._old)
+            signal.signal(signal.SIGTERM, self._old_term)
+
+
+@click.command("run")
+@click.argument("protocol")
+@click.option("--sim", is_flag=True, help="run on a fresh simulated bench in this process")
+@click.option("--rig", "rig_path", type=click.Path(dir_okay=False), help="rig file of real (or `labrig sim`) instruments")
+@click.option("--scenario", default="none", show_default=True, help="hidden effect(s) on the simulated bench, joined with '+'")
+@click.option("--seed", default=0, show_default=True, type=int)
+@click.option("--preset", default="paper", show_default=True, help="the simulated strip")
+@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=float, help="simulated bench speed")
+@click.option("--out", type=click.Path(dir_okay=False), help="session file to write (HDF5)")
+@click.option("--resume", "resume_path", type=click.Path(dir_okay=False), help="continue an interrupted session file")
+@click.option("--live", is_flag=True, help="show the live plot window")
+@click.option("--fit", "do_fit", is_flag=True, help="fit the model straight after the run")
+@click.option("--diagnose", "do_diagnose", is_flag=True, help="diagnose straight after the fit")
+@click.option("-q", "--quiet", is_flag=True, help="no progress display")
+def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, quiet) -> None:
+    """Run PROTOCOL (a bundled name such as paper-sweep, or a TOML file) and store every sample."""
+    from labrig.session_run import RunRequest, execute
+
+    if sim == bool(rig_path):
+        raise BadInput("give exactly one of --sim or --rig RIG.toml")
+    if resume_path and out:
+        raise BadInput("--resume appends to its own file: do not give --out")
+    if not resume_path and not out:
+        raise BadInput("--out FILE.h5 is required")
+    path = Path(resume_path or out)
+    if out and path.exists():
+        raise BadInput(f"{out}: already exists; labrig never overwrites a session (choose another --out)")
+    if resume_path and not path.exists():
+        raise BadInput(f"{resume_path}: no such session to resume")
+    if not sim and scenario != "none":
+        raise BadInput("--scenario needs --sim")
+    req = RunRequest(
+        protocol=protocol,
+        path=path,
+        resume=bool(resume_path),
+        sim=sim,
+        rig_path=rig_path,
+        effects=_effects(scenario, seed) if sim else [],
+        seed=seed,
+        preset=preset,
+        time_scale=time_scale,
+        live=live,
+        quiet=quiet,
+    )
+    result = execute(req, interrupts=_Interrupts)
+    if result.exit_code == 0 and (do_fit or do_diagnose):
+        from labrig.cli.analysis_hooks import after_run
+
+        after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
+    if result.exit_code != 0:
+        raise click.exceptions.Exit(result.exit_code)
+
+
+@click.command("sim")
+@click.option("--rig-out", required=True, type=click.Path(dir_okay=False), help="rig file to write")
+@click.option("--preset", default="paper", show_default=True)
+@click.option("--scenario", default="none", show_default=True)
+@click.option("--seed", default=0, show_default=True, type=int)
+@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=float)
+@click.option("--transport", type=click.Choice(["tcp", "pty"]), default="tcp", show_default=True, help="serial instruments on socket:// or a pty")
+def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport) -> None:
+    """Serve the simulated instruments on 127.0.0.1 until SIGINT/SIGTERM; write the rig file pointing at them."""
+    from labrig.clock import ScaledClock
+    from labrig.simulate import rig_file_data
+    from mock_devices.simbench import SimulatedInstruments
+    from mock_devices.world import Bench
+
+    effects = _effects(scenario, seed)
+    clock = ScaledClock(time_scale, time.time())
+    bench = Bench(clock, preset=preset, seed=seed, effects=effects)
+    stop = threading.Event()
+    handler = lambda signum, frame: stop.set()  # noqa: E731
+    signal.signal(signal.SIGINT, handler)
+    signal.signal(signal.SIGTERM, handler)
+    with ExitStack() as stack:
+        sims = stack.enter_context(SimulatedInstruments(bench, serial_transport=transport, seed=seed))
+        data = rig_file_data(sims, clock, preset)
+        try:
+            Path(rig_out).write_text("# written by `labrig sim`: simulated instruments on loopback\n" + tomli_w.dumps(data))
+        except OSError as exc:
+            raise BadInput(f"{rig_out}: cannot write ({exc.strerror})") from None
+        for name, table in data["instruments"].items():
+            click.echo(f"{name:10s} {table.get('address', table.get('mode'))}")
+        click.echo(f"rig file: {rig_out}  (time scale {time_scale:g}x; Ctrl-C to stop)", err=True)
+        while not stop.wait(0.2):
+            pass
+    click.echo("simulated instruments stopped", err=True)

@@ -1,0 +1,1 @@
+"""Model fitting: seed 000 (clamping pressure) and seed 001 (Hammerstein grey box)."""
