@@ -1,0 +1,115 @@
+"""``labrig inspect`` (what a session holds, what is incomplete) and ``labrig import`` (CSV manifest -> session)."""
+
+from __future__ import annotations
+
+import math
+from datetime import datetime, timezone
+from typing import Any
+
+import click
+
+from labrig.cli.common import print_json
+
+
+def _time(wall: float) -> str | None:
+    return datetime.fromtimestamp(wall, timezone.utc).isoformat(timespec="seconds") if math.isfinite(wall) else None
+
+
+def summary(path: str) -> dict[str, Any]:
+    """Everything ``inspect`` shows, as plain data."""
+    from labrig.store_reader import SessionReader
+
+    with SessionReader(path) as r:
+        steps = r.steps()
+        return {
+            "file": str(r.path),
+            "run_uid": r.uid,
+            "protocol": r.protocol,
+            "start_time": _time(r.start_wall),
+            "end_time": _time(r.end_wall),
+            "exit_status": r.exit_status,
+            "reason": r.reason,
+            "resumes": r.resumes,
+            "labrig_version": r.software.get("labrig_version"),
+            "sample": r.sample,
+            "instruments": r.instruments,
+            "steps": [
+                {
+                    "index": s.index, "name": s.name, "kind": s.kind,
+                    "pressure_kPa": s.metadata.get("pressure_kPa"),
+                    "duration_s": s.duration_s if math.isfinite(s.duration_s) else None,
+                    "rows": s.rows, "expected_rows": s.expected_rows, "status": s.status,
+                }
+                for s in steps
+            ],
+            "analysis": r.analyses(),
+            "incomplete": r.incomplete(),
+        }
+
+
+def _identity(conf: dict[str, Any]) -> str:
+    keys = ("model", "identity", "idn", "address", "port", "resource", "target")
+    found = [str(conf[k]) for k in keys if k in conf and not isinstance(conf[k], (dict, list))]
+    return f" ({', '.join(found[:2])})" if found else ""
+
+
+def _print(s: dict[str, Any]) -> None:
+    echo = click.echo
+    echo(f"session      {s['file']}")
+    echo(f"run          {s['run_uid']}  protocol {s['protocol']}  labrig {s['labrig_version']}")
+    for res in s["resumes"]:
+        echo(f"resumed      {res['start_time']} as run {res['uid']}")
+    end = s["exit_status"] or "none (no RunStop)"
+    reason = f" ({s['reason']})" if s["reason"] else ""
+    echo(f"time         {s['start_time']} .. {s['end_time'] or '?'}  exit status {end}{reason}")
+    echo("sample       " + ("  ".join(f"{k}={v}" for k, v in s["sample"].items()) or "(none)"))
+    inst = [f"{name}{_identity(conf)}" for name, conf in s["instruments"].items()]
+    echo("instruments  " + (", ".join(inst) or "(none)"))
+    echo(f"steps        {len(s['steps'])}")
+    width = max((len(st["name"]) for st in s["steps"]), default=4)
+    kwidth = max((len(st["kind"]) for st in s["steps"]), default=4)
+    for st in s["steps"]:
+        p = f"{st['pressure_kPa']:7g} kPa" if isinstance(st["pressure_kPa"], (int, float)) else " " * 11
+        d = f"{st['duration_s']:9.2f} s" if st["duration_s"] is not None else " " * 11
+        rows = ", ".join(f"{k} {n}" + (f"/{st['expected_rows'][k]}" if st["expected_rows"].get(k) else "") for k, n in st["rows"].items())
+        echo(f"  {st['index']:3d}  {st['name']:<{width}}  {st['kind']:<{kwidth}}  {p}  {d}  {st['status']:<8}  {rows or '-'}")
+    if s["analysis"]:
+        echo("analysis     " + ", ".join(s["analysis"]))
+    if s["incomplete"]:
+        echo(f"incomplete   {len(s['incomplete'])} item(s):")
+        for line in s["incomplete"]:
+            echo(f"  - {line}")
+    else:
+        echo("incomplete   nothing: every step done, run stopped with success")
+
+
+@click.command("inspect")
+@click.argument("file", type=click.Path(dir_okay=True))
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object")
+def inspect_cmd(file: str, as_json: bool) -> None:
+    """What a session file holds and what is incomplete."""
+    s = summary(file)
+    if as_json:
+        print_json(s)
+    else:
+        _print(s)
+
+
+@click.command("import")
+@click.argument("manifest", type=click.Path(dir_okay=True))
+@click.option("--out", required=True, type=click.Path(dir_okay=False), help="session file to write (.h5)")
+@click.option("--force", is_flag=True, help="overwrite --out if it exists")
+def import_cmd(manifest: str, out: str, force: bool) -> None:
+    """Measured data from elsewhere (TOML manifest of CSV files, DESIGN.md 6) into a session file."""
+    from labrig.importer import import_manifest
+
+    path = import_manifest(manifest, out, overwrite=force)
+    s = summary(str(path))
+    rows = sum(sum(st["rows"].values()) for st in s["steps"])
+    click.echo(f"wrote {len(s['steps'])} records ({rows} rows) to {path}")
+
+
+def register(app: click.Group) -> None:
+    """Add ``inspect`` and ``import`` to the ``labrig`` group."""
+    app.add_command(inspect_cmd)
+    app.add_command(import_cmd)

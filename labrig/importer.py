@@ -1,0 +1,266 @@
+"""``labrig import``: measured data from another rig (a TOML manifest of CSV files) into a session file.
+
+The manifest format is DESIGN.md 6. Everything is validated before anything is written (pydantic with
+``extra="forbid"``, so a misspelt key is an error), then the ``SessionWriter`` is driven with the same
+events a measured run produces, so the fitter and the diagnosis cannot tell an import from a run.
+Every problem is a ``BadInput`` with one line naming the file, the record (1-based, in manifest order)
+or CSV line, and the problem.
+"""
+
+from __future__ import annotations
+
+import csv
+import difflib
+import math
+import os
+import sys
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from labrig import __version__
+from labrig.errors import BadInput
+from labrig.events import Block, RunStart, RunStop, StepEnd, StepPlan, StepStart, daq_stream, eis_stream, force_stream, new_uid
+
+TIME_KINDS = ("step", "harmonic", "stepped_sine", "multisine", "free")
+TIME_REQUIRED = ("t_s", "v_V", "i_A", "disp_m")
+TIME_OPTIONAL = ("force_N",)
+EIS_REQUIRED = ("f_Hz", "z_re_ohm", "z_im_ohm")
+BLOCK_ROWS = 65536  # rows per Block event: the size the live runner's blocks have at most
+
+
+class Specimen(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    length_m: float = Field(gt=0, lt=1)
+    width_m: float = Field(gt=0, lt=1)
+    thickness_m: float = Field(gt=0, lt=0.01)
+    clamp_area_m2: float = Field(gt=0, lt=0.01)
+    medium: Literal["water", "air"]
+
+
+class Record(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    kind: Literal["step", "harmonic", "stepped_sine", "multisine", "free", "eis"]
+    file: str = Field(min_length=1)
+    pressure_kPa: float = Field(gt=0)
+    frequency_Hz: float | None = Field(default=None, gt=0)
+    amplitude_V: float | None = Field(default=None, gt=0)
+    period_s: float | None = Field(default=None, gt=0)
+    temperature_C: float | None = Field(default=None, gt=-273.15)
+    label: str | None = None
+
+    @model_validator(mode="after")
+    def _needs(self) -> "Record":
+        # the fitter cannot recover these from the data alone, so the manifest must say them
+        if self.kind in ("stepped_sine", "harmonic") and self.frequency_Hz is None:
+            raise ValueError(f"a {self.kind} record needs frequency_Hz")
+        if self.kind == "multisine" and self.period_s is None:
+            raise ValueError("a multisine record needs period_s")
+        return self
+
+
+class Manifest(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    specimen: Specimen
+    record: list[Record] = Field(min_length=1)
+
+
+@dataclass
+class Table:
+    """A parsed CSV: column name -> float64 array, in the file's column order."""
+
+    path: Path
+    columns: dict[str, np.ndarray]
+
+    @property
+    def rows(self) -> int:
+        return len(next(iter(self.columns.values())))
+
+
+def _where(loc: tuple, raw: dict[str, Any]) -> str:
+    """A pydantic error location as words: ``record #2 (p612.csv), field pressure_kPa``."""
+    parts = list(loc)
+    out = []
+    if parts and parts[0] == "record" and len(parts) > 1 and isinstance(parts[1], int):
+        i = parts[1]
+        rec = raw.get("record", [])
+        name = rec[i].get("file") if i < len(rec) and isinstance(rec[i], dict) else None
+        out.append(f"record #{i + 1}" + (f" ({name})" if isinstance(name, str) else ""))
+        parts = parts[2:]
+    elif parts:
+        out.append(f"[{parts[0]}]" if parts[0] == "specimen" else str(parts[0]))
+        parts = parts[1:]
+    if parts:
+        out.append("field " + ".".join(str(p) for p in parts))
+    return ", ".join(out)
+
+
+def load_manifest(path: str | Path) -> tuple[Manifest, dict[str, Any]]:
+    p = Path(path)
+    try:
+        raw = tomllib.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise BadInput(f"{p}: no such file") from None
+    except IsADirectoryError:
+        raise BadInput(f"{p}: is a directory, not a manifest") from None
+    except UnicodeDecodeError:
+        raise BadInput(f"{p}: not UTF-8 text") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise BadInput(f"{p}: not valid TOML: {exc}") from None
+    try:
+        return Manifest.model_validate(raw), raw
+    except ValidationError as exc:
+        # a misspelt key shows as "unknown" and as "missing": the unknown one says what to fix
+        err = sorted(exc.errors(), key=lambda e: e["type"] != "extra_forbidden")[0]
+        where = _where(tuple(err["loc"]), raw)
+        if err["type"] == "extra_forbidden":
+            key = str(err["loc"][-1])
+            model = {0: Manifest, 1: Specimen if err["loc"][0] == "specimen" else Record}.get(min(len(err["loc"]) - 1, 1), Record)
+            close = difflib.get_close_matches(key, list(model.model_fields), n=1)
+            msg = f"unknown key {key!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
+            where = _where(tuple(err["loc"][:-1]), raw) or "top level"
+        elif err["type"] == "missing":
+            msg = "missing"
+        else:
+            msg = err["msg"].removeprefix("Value error, ")
+            if "input" in err and not isinstance(err["input"], (dict, list)):
+                msg += f" (got {err['input']!r})"
+        more = f" (and {exc.error_count() - 1} more problems)" if exc.error_count() > 1 else ""
+        raise BadInput(f"{p}: {where + ': ' if where else ''}{msg}{more}") from None
+
+
+def read_csv(path: Path, required: tuple[str, ...], optional: tuple[str, ...] = ()) -> Table:
+    """A CSV with a header row; every cell a finite number; every row as long as the header."""
+    try:
+        fh = open(path, newline="", encoding="utf-8")
+    except FileNotFoundError:
+        raise BadInput(f"{path}: no such file") from None
+    except OSError as exc:
+        raise BadInput(f"{path}: cannot read ({exc.strerror})") from None
+    with fh:
+        reader = csv.reader(fh)
+        try:
+            header = [h.strip() for h in next(reader)]
+        except StopIteration:
+            raise BadInput(f"{path}: empty file (expected a header row {', '.join(required)})") from None
+        except (csv.Error, UnicodeDecodeError) as exc:
+            raise BadInput(f"{path}: line 1: not CSV text ({exc})") from None
+        for name in header:
+            if name not in required and name not in optional:
+                allowed = ", ".join(required + optional)
+                raise BadInput(f"{path}: line 1: unknown column {name!r} (expected {allowed})")
+            if header.count(name) > 1:
+                raise BadInput(f"{path}: line 1: column {name!r} appears twice")
+        missing = [c for c in required if c not in header]
+        if missing:
+            raise BadInput(f"{path}: line 1: missing column {missing[0]!r} (header: {', '.join(header)})")
+        cols: list[list[float]] = [[] for _ in header]
+        try:
+            for row in reader:
+                line = reader.line_num
+                if not row or all(not c.strip() for c in row):
+                    continue  # blank lines (a trailing newline) carry nothing
+                if len(row) != len(header):
+                    raise BadInput(f"{path}: line {line}: {len(row)} cells, the header has {len(header)}")
+                for k, cell in enumerate(row):
+                    try:
+                        v = float(cell)
+                    except ValueError:
+                        raise BadInput(f"{path}: line {line}, column {header[k]}: not a number: {cell.strip()!r}") from None
+                    if not math.isfinite(v):
+                        raise BadInput(f"{path}: line {line}, column {header[k]}: {cell.strip()} (every value must be finite)")
+                    cols[k].append(v)
+        except (csv.Error, UnicodeDecodeError) as exc:
+            raise BadInput(f"{path}: line {reader.line_num}: not CSV text ({exc})") from None
+    if not cols[0]:
+        raise BadInput(f"{path}: no data rows after the header")
+    return Table(path, {name: np.array(c, dtype=np.float64) for name, c in zip(header, cols)})
+
+
+def _check_axis(table: Table, name: str, strictly_increasing: bool, positive: bool) -> None:
+    a = table.columns[name]
+    if positive and np.any(a <= 0):
+        k = int(np.argmax(a <= 0))
+        raise BadInput(f"{table.path}: line {k + 2}, column {name}: must be positive (got {a[k]:g})")
+    if strictly_increasing and a.size > 1 and np.any(np.diff(a) <= 0):
+        k = int(np.argmax(np.diff(a) <= 0)) + 1
+        raise BadInput(f"{table.path}: line {k + 2}, column {name}: not increasing ({a[k - 1]:g} then {a[k]:g})")
+
+
+def load_record(base: Path, rec: Record) -> Table:
+    path = base / rec.file
+    if rec.kind == "eis":
+        table = read_csv(path, EIS_REQUIRED)
+        _check_axis(table, "f_Hz", strictly_increasing=False, positive=True)
+    else:
+        table = read_csv(path, TIME_REQUIRED, TIME_OPTIONAL)
+        _check_axis(table, "t_s", strictly_increasing=True, positive=False)
+        if table.rows < 2:
+            raise BadInput(f"{path}: a time series needs at least 2 rows")
+    return table
+
+
+def _step_name(rec: Record, used: set[str]) -> str:
+    base = rec.label or f"p{rec.pressure_kPa:g}/{rec.kind}" + (f"_{rec.frequency_Hz:g}Hz" if rec.frequency_Hz else "")
+    name, k = base, 2
+    while name in used:
+        name, k = f"{base}_{k}", k + 1
+    used.add(name)
+    return name
+
+
+def _plan(records: list[Record], tables: list[Table]) -> tuple[StepPlan, ...]:
+    steps, used = [], set()
+    for i, (rec, tab) in enumerate(zip(records, tables)):
+        meta = {k: v for k, v in rec.model_dump().items() if v is not None and k != "file"}
+        meta["source_file"] = rec.file
+        if rec.kind == "eis":
+            streams = (eis_stream(tab.rows),)
+        else:
+            t = tab.columns["t_s"]
+            meta["fs_Hz"] = float(1.0 / np.median(np.diff(t)))
+            meta["duration_s"] = float(t[-1] - t[0])
+            streams = (daq_stream(tab.rows),) + ((force_stream(tab.rows),) if "force_N" in tab.columns else ())
+        steps.append(StepPlan(i, _step_name(rec, used), rec.kind, meta, streams))
+    return tuple(steps)
+
+
+def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = False) -> Path:
+    """Validate the manifest and its CSVs, then write the session file ``out``; returns its path."""
+    mpath = Path(manifest)
+    m, raw = load_manifest(mpath)
+    tables = [load_record(mpath.parent, rec) for rec in m.record]
+    out = Path(out)
+    if out.exists() and not overwrite:
+        raise BadInput(f"{out}: already exists (use --force to overwrite)")
+    steps = _plan(m.record, tables)
+    from labrig.store_writer import SessionWriter  # heavy (h5py): only once the input is known good
+
+    uid = new_uid()
+    tmp = out.with_name(out.name + ".part")  # a failed import leaves no half file under the real name
+    w = SessionWriter(tmp)
+    try:
+        w(RunStart(uid=uid, protocol=f"import:{mpath.name}", config={"manifest": str(mpath.resolve()), **raw},
+                   rig={"source": "import", "manifest": str(mpath.resolve())}, sample=m.specimen.model_dump(),
+                   software={"labrig": __version__, "python": sys.version.split()[0]}, steps=steps, t=0.0))
+        t0 = 0.0
+        for plan, tab in zip(steps, tables):
+            w(StepStart(uid, plan.index, t0))
+            for spec in plan.streams:
+                cols = [c.name for c in spec.columns]
+                for a in range(0, tab.rows, BLOCK_ROWS):
+                    w(Block(uid, plan.index, spec.name, {c: tab.columns[c][a:a + BLOCK_ROWS] for c in cols}, seq=a))
+            t1 = t0 + plan.metadata.get("duration_s", 0.0)
+            w(StepEnd(uid, plan.index, "done", t1, {"rows": tab.rows, "source_file": str(tab.path)}))
+            t0 = t1
+        w(RunStop(uid, "success", f"imported from {mpath.name}", t0))
+    except BaseException:
+        w.close()
+        tmp.unlink(missing_ok=True)
+        raise
+    os.replace(tmp, out)
+    return out

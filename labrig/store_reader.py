@@ -1,0 +1,269 @@
+"""``SessionReader``: the one way the fitter, the diagnosis and ``labrig inspect`` read a session.
+
+Opens finished sessions, sessions still being written (SWMR read) and sessions whose writer was killed:
+HDF5 refuses a plain read-only open of a file still flagged "open for write", so the reader then falls
+back to ``swmr=True``, which HDF5 allows for SWMR-written files and which needs nothing cleared.
+Streams are returned in SI units, each column cut to the rows every column has (a writer killed between
+columns of one block leaves them one block apart).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import h5py
+import numpy as np
+
+from labrig import store as st
+from labrig.errors import BadInput
+
+
+@dataclass
+class StepRecord:
+    index: int
+    name: str
+    kind: str
+    metadata: dict[str, Any]
+    status: str  # planned | running | done | aborted | failed | skipped
+    t_start: float  # rig clock, s (nan if never started)
+    t_end: float
+    wall_start: float = math.nan
+    wall_end: float = math.nan
+    summary: dict[str, Any] = field(default_factory=dict)
+    rows: dict[str, int] = field(default_factory=dict)  # stream -> rows every column has
+    expected_rows: dict[str, int] = field(default_factory=dict)  # stream -> planned rows (0 = unknown)
+    group: str = ""  # HDF5 path of the step
+
+    @property
+    def duration_s(self) -> float:
+        return self.t_end - self.t_start
+
+
+class StreamData(dict):
+    """Column name -> 1-D float64 array (SI), with ``units`` (column -> units), ``signal`` and ``axis``."""
+
+    def __init__(self, columns: dict[str, np.ndarray], units: dict[str, str], signal: str, axis: str, expected_rows: int):
+        super().__init__(columns)
+        self.units = units
+        self.signal = signal
+        self.axis = axis
+        self.expected_rows = expected_rows
+
+    @property
+    def rows(self) -> int:
+        return len(next(iter(self.values()))) if self else 0
+
+
+class SessionReader:
+    """Read a session file (context manager). Raises ``BadInput`` naming the file if it is not one."""
+
+    def __init__(self, path: str | Path):
+        self.path = st.check_path(path)
+        self.swmr = False
+        try:
+            self._f = h5py.File(self.path, "r")
+        except OSError as exc:
+            if not st._crashed_writer_flags(exc):
+                raise BadInput(f"{self.path}: cannot open ({exc})") from None
+            try:  # being written right now, or its writer was killed: SWMR read works for both
+                self._f = h5py.File(self.path, "r", swmr=True)
+                self.swmr = True
+            except OSError as exc2:
+                raise BadInput(f"{self.path}: cannot open ({exc2})") from None
+        if not st.is_session(self._f):
+            self._f.close()
+            raise BadInput(f"{self.path}: not a labrig session (no /entry with a labrig_format attribute)")
+        self._entry = self._f["entry"]
+
+    def close(self) -> None:
+        self._f.close()
+
+    def __enter__(self) -> "SessionReader":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def _ds(self, key: str) -> h5py.Dataset:
+        ds = self._entry[key]
+        if self.swmr:
+            ds.refresh()  # see what the writer flushed since the file was opened
+        return ds
+
+    def _text(self, key: str) -> str:
+        return st.text(self._ds(key)[()])
+
+    def _json(self, key: str) -> Any:
+        return json.loads(self._text(key))
+
+    # ------------------------------------------------------------ the run
+
+    @property
+    def uid(self) -> str:
+        return st.text(self._entry.attrs["run_uid"])
+
+    @property
+    def protocol(self) -> str:
+        return st.text(self._entry.attrs["protocol"])
+
+    @property
+    def sample(self) -> dict[str, Any]:
+        return json.loads(st.text(self._entry["sample"].attrs["labrig_json"]))
+
+    @property
+    def rig(self) -> dict[str, Any]:
+        return json.loads(st.text(self._entry["instrument"].attrs["labrig_json"]))
+
+    @property
+    def instruments(self) -> dict[str, dict[str, Any]]:
+        inst = self._entry["instrument"]
+        return {name: json.loads(st.text(g.attrs["labrig_json"])) for name, g in inst.items() if isinstance(g, h5py.Group)}
+
+    @property
+    def config(self) -> dict[str, Any]:
+        return self._json("provenance/config_json")
+
+    @property
+    def software(self) -> dict[str, Any]:
+        return {"labrig_version": self._text("provenance/labrig_version"), **self._json("provenance/software_json")}
+
+    @property
+    def start_time(self) -> str:
+        return self._text("provenance/start_time")
+
+    @property
+    def start_wall(self) -> float:
+        return float(self._ds("provenance/start_wall")[()])
+
+    @property
+    def exit_status(self) -> str | None:
+        """success | abort | fail from RunStop; None if the run never stopped (crash, or still running)."""
+        return self._text("end/exit_status") or None
+
+    @property
+    def reason(self) -> str:
+        return st.read_bytes(self._ds("end/reason")).decode("utf-8", "replace")
+
+    @property
+    def end_wall(self) -> float:
+        return float(self._ds("end/wall")[()])
+
+    @property
+    def resumes(self) -> list[dict[str, Any]]:
+        """One record per resume: uid, start_time, resumed_from."""
+        res = self._entry["provenance"].get("resumes")
+        if res is None:
+            return []
+        return [{"uid": st.text(g["run_uid"][()]), "start_time": st.text(g["start_time"][()]),
+                 "resumed_from": st.text(g["resumed_from"][()])} for g in res.values()]
+
+    # ------------------------------------------------------------ steps and streams
+
+    def _step_groups(self) -> list[h5py.Group]:
+        steps = self._entry["steps"]
+        return sorted((steps[n] for n in steps), key=lambda g: int(g.attrs["index"]))
+
+    def _record(self, g: h5py.Group) -> StepRecord:
+        base = g.name.split("/entry/", 1)[1]
+        rows, expected = {}, {}
+        for sname, sg in g.items():
+            if isinstance(sg, h5py.Group):
+                rows[sname] = min((self._ds(f"{base}/{sname}/{c}").shape[0] for c in sg), default=0)
+                expected[sname] = int(sg.attrs.get("expected_rows", 0))
+        summary = st.read_bytes(self._ds(f"{base}/summary"))
+        return StepRecord(
+            index=int(g.attrs["index"]), name=st.text(g.attrs["name"]), kind=st.text(g.attrs["kind"]),
+            metadata=json.loads(st.text(g.attrs["metadata_json"])), status=self._text(f"{base}/status"),
+            t_start=float(self._ds(f"{base}/t_start")[()]), t_end=float(self._ds(f"{base}/t_end")[()]),
+            wall_start=float(self._ds(f"{base}/wall_start")[()]), wall_end=float(self._ds(f"{base}/wall_end")[()]),
+            summary=json.loads(summary) if summary else {}, rows=rows, expected_rows=expected, group=g.name,
+        )
+
+    def steps(self) -> list[StepRecord]:
+        """Every planned step in plan order, with its status now."""
+        return [self._record(g) for g in self._step_groups()]
+
+    def step(self, step: int | str | StepRecord) -> StepRecord:
+        """A step by index, by name or from a record."""
+        key = step.index if isinstance(step, StepRecord) else step
+        for g in self._step_groups():
+            if (isinstance(key, str) and st.text(g.attrs["name"]) == key) or (not isinstance(key, str) and int(g.attrs["index"]) == key):
+                return self._record(g)
+        raise KeyError(f"{self.path}: no step {step!r}")
+
+    def done_steps(self) -> list[int]:
+        return [s.index for s in self.steps() if s.status in st.DONE_STATUSES]
+
+    def unfinished_steps(self) -> list[int]:
+        return [s.index for s in self.steps() if s.status not in st.DONE_STATUSES]
+
+    def stream(self, step: int | str | StepRecord, name: str) -> StreamData:
+        """The columns of one stream of one step (SI), cut to the rows every column has."""
+        rec = self.step(step)
+        base = rec.group.split("/entry/", 1)[1]
+        if name not in self._entry[base] or not isinstance(self._entry[base][name], h5py.Group):
+            raise KeyError(f"{self.path}: step {rec.index} ({rec.name}) has no stream {name!r}")
+        g = self._entry[f"{base}/{name}"]
+        cols = [st.text(c) for c in g.attrs["columns"]]
+        n = rec.rows[name]
+        data = {c: self._ds(f"{base}/{name}/{c}")[:n] for c in cols}
+        units = {c: st.text(g[c].attrs["units"]) for c in cols}
+        return StreamData(data, units, st.text(g.attrs["signal"]), st.text(g.attrs["axes"]), int(g.attrs["expected_rows"]))
+
+    def streams(self, step: int | str | StepRecord) -> list[str]:
+        return list(self.step(step).rows)
+
+    # ------------------------------------------------------------ transcripts, analyses, completeness
+
+    def devices(self) -> list[str]:
+        """Devices with a transcript dataset (``_other`` holds lines of devices not in the rig)."""
+        return list(self._entry["transcripts"])
+
+    def transcript(self, device: str) -> str:
+        """The device's instrument traffic as JSONL text ("" if none)."""
+        tr = self._entry["transcripts"]
+        if device in tr:
+            return st.read_bytes(self._ds(f"transcripts/{device}")).decode("utf-8", "replace")
+        other = st.read_bytes(self._ds("transcripts/_other")).decode("utf-8", "replace")
+        keep = []
+        for line in other.splitlines():
+            try:
+                if json.loads(line).get("device") == device:
+                    keep.append(line + "\n")
+            except (ValueError, AttributeError):
+                continue
+        return "".join(keep)
+
+    def analyses(self) -> list[str]:
+        """Names of the stored analyses (``fit``, ``fit/seed001``...): the groups write_analysis made."""
+        ana = self._entry.get("analysis")
+        names: list[str] = []
+        if ana is not None:
+            ana.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Group) and "written" in o.attrs else None)
+        return sorted(names)
+
+    def read_analysis(self, name: str) -> dict[str, Any]:
+        return st.read_analysis_group(self._f, self.path, name)
+
+    def incomplete(self) -> list[str]:
+        """Human-readable lines of what is incomplete; [] for a complete, successful session."""
+        out = []
+        status = self.exit_status
+        if status is None:
+            out.append("no RunStop: the run did not finish (crashed, killed or still running)")
+        elif status != "success":
+            reason = self.reason
+            out.append(f"run ended with exit status {status}" + (f": {reason}" if reason else ""))
+        for s in self.steps():
+            if s.status not in st.DONE_STATUSES:
+                what = {"planned": "never started", "running": "interrupted while running"}.get(s.status, s.status)
+                out.append(f"step {s.index} {s.name}: {what}")
+            for name, n in s.rows.items():
+                want = s.expected_rows.get(name, 0)
+                if s.status != "skipped" and want and n < want:
+                    out.append(f"step {s.index} {s.name}: stream {name} has {n} of {want} rows")
+        return out

@@ -1,0 +1,127 @@
+"""``labrig import``: a manifest of CSVs becomes a session like a measured one; every bad input is exit 2, one line."""
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from labrig.cli import main
+from labrig.store import SessionReader
+
+EXAMPLE = Path(__file__).parent / "data" / "import_example"
+
+
+def run_cli(*args):
+    return subprocess.run([sys.executable, "-m", "labrig", *map(str, args)], capture_output=True, text=True)
+
+
+def csv_columns(path):
+    header = path.read_text().splitlines()[0].split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def test_good_manifest_round_trips_every_value(tmp_path):
+    out = tmp_path / "imported.h5"
+    r = run_cli("import", EXAMPLE / "manifest.toml", "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert "wrote 5 records" in r.stdout
+    with SessionReader(out) as s:
+        assert s.exit_status == "success" and s.incomplete() == []
+        assert s.sample == {"length_m": 0.03, "width_m": 0.004, "thickness_m": 0.00022, "clamp_area_m2": 1.6e-5, "medium": "water"}
+        steps = s.steps()
+        assert [(x.name, x.kind, x.status) for x in steps] == [
+            ("p612/step", "step", "done"), ("p612/sine_2Hz", "stepped_sine", "done"), ("p612/eis", "eis", "done"),
+            ("p3062/step", "step", "done"), ("p3062/eis", "eis", "done")]
+        meta = steps[1].metadata
+        assert (meta["pressure_kPa"], meta["frequency_Hz"], meta["amplitude_V"], meta["temperature_C"]) == (612, 2.0, 0.5, 25.0)
+        assert meta["fs_Hz"] == pytest.approx(100.0) and meta["source_file"] == "p612_sine_2Hz.csv"
+        for step, stream, csv in [(0, "daq", "p612_step.csv"), (1, "daq", "p612_sine_2Hz.csv"), (2, "eis", "p612_eis.csv"),
+                                  (3, "daq", "p3062_step.csv"), (4, "eis", "p3062_eis.csv")]:
+            got, want = s.stream(step, stream), csv_columns(EXAMPLE / csv)
+            assert set(got) == set(want)
+            for name in want:
+                assert np.array_equal(got[name], want[name]), (csv, name)  # bit-identical, not approximately
+        assert s.stream(2, "eis").units == {"f_Hz": "Hz", "z_re_ohm": "ohm", "z_im_ohm": "ohm"}
+    r = run_cli("inspect", out, "--json")
+    assert r.returncode == 0 and json.loads(r.stdout)["steps"][3]["pressure_kPa"] == 3062
+
+
+def test_optional_force_column_becomes_a_force_stream(tmp_path):
+    (tmp_path / "r.csv").write_text("t_s,v_V,i_A,disp_m,force_N\n0,0,0,0,9.8\n0.5,1,1e-3,2e-5,9.7\n1.0,1,1e-3,3e-5,9.6\n")
+    (tmp_path / "m.toml").write_text(SPECIMEN + '[[record]]\nkind = "free"\npressure_kPa = 612\nfile = "r.csv"\n')
+    assert main(["import", str(tmp_path / "m.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    with SessionReader(tmp_path / "s.h5") as s:
+        assert s.stream(0, "force")["force_N"].tolist() == [9.8, 9.7, 9.6]
+        assert s.stream(0, "daq")["disp_m"].tolist() == [0, 2e-5, 3e-5]
+
+
+def test_existing_output_needs_force(tmp_path):
+    out = tmp_path / "s.h5"
+    out.write_bytes(b"precious")
+    r = run_cli("import", EXAMPLE / "manifest.toml", "--out", out)
+    assert r.returncode == 2 and "already exists" in r.stderr and out.read_bytes() == b"precious"
+    assert main(["import", str(EXAMPLE / "manifest.toml"), "--out", str(out), "--force"]) == 0
+
+
+SPECIMEN = """[specimen]
+length_m = 0.030
+width_m = 0.004
+thickness_m = 0.00022
+clamp_area_m2 = 1.6e-5
+medium = "water"
+"""
+STEP = '[[record]]\nkind = "step"\npressure_kPa = 612\nfile = "a.csv"\n'
+GOOD_CSV = "t_s,v_V,i_A,disp_m\n0,0,0,0\n0.01,1,1e-3,1e-6\n0.02,1,1e-3,2e-6\n"
+
+# (name, manifest text, {csv file: text}, the file the message must name, what it must say)
+BAD = [
+    ("unknown_record_key", STEP.replace("pressure_kPa", "pressure_kpa"), {}, "m.toml", "record #1 (a.csv): unknown key 'pressure_kpa'"),
+    ("unknown_specimen_key", STEP, {}, "m.toml", "[specimen]: unknown key 'lenght_m'"),
+    ("unknown_top_key", STEP + "\n[extra]\nx = 1\n", {}, "m.toml", "unknown key 'extra'"),
+    ("wrong_kind", STEP.replace('"step"', '"sweep"'), {}, "m.toml", "record #1 (a.csv), field kind"),
+    ("negative_pressure", STEP.replace("612", "-612"), {}, "m.toml", "field pressure_kPa: Input should be greater than 0"),
+    ("missing_field", STEP.replace('file = "a.csv"\n', ""), {}, "m.toml", "record #1, field file: missing"),
+    ("sine_without_frequency", STEP.replace('"step"', '"stepped_sine"'), {}, "m.toml", "needs frequency_Hz"),
+    ("not_toml", STEP + "pressure_kPa = = 3\n", {}, "m.toml", "not valid TOML"),
+    ("missing_csv", STEP, None, "a.csv", "no such file"),
+    ("missing_column", STEP, {"a.csv": "t_s,v_V,i_A\n0,0,0\n1,1,1\n"}, "a.csv", "missing column 'disp_m'"),
+    ("unknown_column", STEP, {"a.csv": "t_s,v_V,i_A,disp_mm\n0,0,0,0\n1,1,1,1\n"}, "a.csv", "unknown column 'disp_mm'"),
+    ("non_numeric", STEP, {"a.csv": GOOD_CSV + "0.03,1,abc,3e-6\n"}, "a.csv", "line 5, column i_A: not a number: 'abc'"),
+    ("nan", STEP, {"a.csv": GOOD_CSV + "0.03,nan,1e-3,3e-6\n"}, "a.csv", "line 5, column v_V: nan"),
+    ("unequal_lengths", STEP, {"a.csv": GOOD_CSV + "0.03,1,1e-3\n"}, "a.csv", "line 5: 3 cells, the header has 4"),
+    ("time_not_increasing", STEP, {"a.csv": GOOD_CSV + "0.02,1,1e-3,3e-6\n"}, "a.csv", "line 5, column t_s: not increasing"),
+    ("empty_csv", STEP, {"a.csv": ""}, "a.csv", "empty file"),
+    ("header_only", STEP, {"a.csv": "t_s,v_V,i_A,disp_m\n"}, "a.csv", "no data rows"),
+    ("eis_negative_frequency", STEP.replace('"step"', '"eis"'), {"a.csv": "f_Hz,z_re_ohm,z_im_ohm\n1,2,3\n-1,2,3\n"}, "a.csv",
+     "line 3, column f_Hz: must be positive"),
+]
+
+
+@pytest.mark.parametrize("name,manifest,csvs,names,says", BAD, ids=[b[0] for b in BAD])
+def test_bad_manifest_or_csv_is_exit_2_with_one_line(tmp_path, capsys, name, manifest, csvs, names, says):
+    specimen = SPECIMEN.replace("length_m", "lenght_m") if name == "unknown_specimen_key" else SPECIMEN
+    (tmp_path / "m.toml").write_text(specimen + manifest)
+    for fname, body in ({"a.csv": GOOD_CSV} if csvs == {} else csvs or {}).items():
+        (tmp_path / fname).write_text(body)
+    out = tmp_path / "s.h5"
+    code = main(["import", str(tmp_path / "m.toml"), "--out", str(out)])  # the entry point python -m labrig runs
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    assert str(tmp_path / names) in err and says in err, err
+    assert not out.exists() and not list(tmp_path.glob("*.part"))
+
+
+def test_bad_input_through_the_real_command_line(tmp_path):
+    r = run_cli("import", tmp_path / "none.toml", "--out", tmp_path / "s.h5")
+    assert r.returncode == 2 and r.stderr.strip() == f"labrig: error: {tmp_path / 'none.toml'}: no such file"
+    shutil.copytree(EXAMPLE, tmp_path / "ex")
+    (tmp_path / "ex" / "p612_eis.csv").write_text("f_Hz,z_re_ohm,z_im_ohm\n1,2,3\n2,inf,3\n")
+    r = run_cli("import", tmp_path / "ex" / "manifest.toml", "--out", tmp_path / "s.h5")
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
+    assert "p612_eis.csv: line 3, column z_re_ohm: inf" in r.stderr
