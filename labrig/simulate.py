@@ -16,12 +16,15 @@ from mock_devices.world import Bench, Effect
 DEFAULT_TIME_SCALE = 1000.0
 
 
-def rig_file_data(sims: SimulatedInstruments, clock: ScaledClock, preset: str) -> dict:
-    return {
+def rig_file_data(sims: SimulatedInstruments, clock: ScaledClock, preset: str, safety: dict | None = None) -> dict:
+    data = {
         "clock": {"time_scale": clock.time_scale, "epoch_wall": clock.epoch_wall},
         "sample": {"preset": preset},
         "instruments": sims.rig_tables(),
     }
+    if safety:
+        data["safety"] = dict(safety)
+    return data
 
 
 @contextmanager
@@ -32,12 +35,13 @@ def simulated_rig(
     time_scale: float = DEFAULT_TIME_SCALE,
     transcript: Transcript | None = None,
     serial_transport: str = "tcp",
+    safety: dict | None = None,
 ) -> Iterator[tuple[Rig, SimulatedInstruments]]:
     clock = ScaledClock(time_scale, time.time())
     bench = Bench(clock, preset=preset, seed=seed, effects=effects)
     sims = SimulatedInstruments(bench, serial_transport=serial_transport, seed=seed).start()
     try:
-        cfg = parse_rig(rig_file_data(sims, clock, preset), "simulated bench")
+        cfg = parse_rig(rig_file_data(sims, clock, preset, safety), "simulated bench")
         rig = open_rig(cfg, clock, transcript)
         try:
             yield rig, sims

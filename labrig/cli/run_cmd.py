@@ -97,7 +97,7 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
     )
     result = execute(req, interrupts=_Interrupts)
     if result.exit_code == 0 and (do_fit or do_diagnose):
-        from labrig.cli.analysis_hooks import after_run
+        from labrig.cli.analysis_cmds import after_run
 
         after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
     if result.exit_code != 0:

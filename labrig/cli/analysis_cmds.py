@@ -1,0 +1,88 @@
+"""``labrig fit`` (and the hooks ``labrig run --fit --diagnose`` use)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import click
+import numpy as np
+
+from labrig.cli.common import jsonable, print_json
+from labrig.errors import BadInput
+
+
+def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
+    return np.array([np.nan if r.get(key) is None else float(r[key]) for r in rows])
+
+
+def run_fit(path: str | Path) -> dict[str, Any]:
+    """Fit the seed-000 model to a session and store the result under /entry/analysis/fit_seed000."""
+    from labrig.fit.seed000 import fit_seed000
+    from labrig.fit.session_data import load_session
+    from labrig.store import SessionFile
+
+    sd = load_session(path)
+    if not sd.pressures and not sd.unpressured:
+        raise BadInput(f"{path}: no finished records to fit")
+    fit = fit_seed000(sd)
+    out = jsonable(fit.to_json())
+    rows = out["per_pressure"]
+    SessionFile(path).write_analysis(
+        "fit_seed000",
+        {
+            "result_json": json.dumps(out),
+            "pressure_kPa": _arr(rows, "pressure_kPa"),
+            "R_cont_ohm": _arr(rows, "R_cont_ohm"),
+            "Kt_bar": _arr(rows, "Kt_bar"),
+            "f1_Hz": _arr(rows, "f1_Hz"),
+            "peak_disp_m": _arr(rows, "peak_disp_m"),
+        },
+    )
+    return out
+
+
+def _summary(out: dict[str, Any]) -> None:
+    click.echo(f"{'kPa':>7} {'R_cont ohm':>16} {'K_t bar':>15} {'f1 Hz':>16} {'step peak mm':>13}")
+
+    def pm(r: dict, k: str, fmt: str) -> str:
+        v, e = r.get(k), r.get(f"{k}_stderr")
+        if v is None:
+            return "-"
+        return (fmt % v) + ("" if e is None else " ± " + (fmt % e))
+
+    for r in out["per_pressure"]:
+        peak = "-" if r.get("peak_disp_m") is None else f"{r['peak_disp_m'] * 1e3:.4f}"
+        click.echo(f"{r['pressure_kPa']:7g} {pm(r, 'R_cont_ohm', '%.3f'):>16} {pm(r, 'Kt_bar', '%.3f'):>15} {pm(r, 'f1_Hz', '%.4f'):>16} {peak:>13}")
+    for name, unit in (("alpha", " J/C"), ("gamma", "")):
+        v, e = out.get(name), out.get(f"{name}_stderr")
+        click.echo(f"{name} = " + ("-" if v is None else f"{v:.4g} ± {e:.2g}{unit}"))
+    click.echo(f"optimum clamping pressure (largest measured step response): {out.get('optimum_pressure_kPa')} kPa")
+    for n in out.get("notes", []):
+        click.echo(f"note: {n}")
+
+
+@click.command("fit")
+@click.argument("session", type=click.Path(dir_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object")
+def fit_cmd(session: str, as_json: bool) -> None:
+    """Fit the paper's model (seed 000) to SESSION; results go into /entry/analysis/fit_seed000."""
+    if not Path(session).exists():
+        raise BadInput(f"{session}: no such session file")
+    out = run_fit(session)
+    if as_json:
+        print_json(out)
+    else:
+        _summary(out)
+
+
+def after_run(path: Path, fit: bool, diagnose: bool, quiet: bool) -> None:
+    if fit:
+        out = run_fit(path)
+        if not quiet:
+            _summary(out)
+    if diagnose:
+        from labrig.cli import diagnose_cmd
+
+        diagnose_cmd.run_and_print(path, as_json=False, quiet=quiet)
