@@ -27,6 +27,7 @@ FORMAT = "labrig-session"
 FORMAT_VERSION = 1
 STATUS_LEN = 16  # fixed-length byte strings: SWMR cannot resize attributes or variable-length strings
 DONE_STATUSES = ("done", "skipped")
+COMMITTED = "committed_rows"  # per stream: rows of whole flushed blocks (readers never read past it)
 TEXT = h5py.string_dtype("utf-8")
 
 __all__ = ["SessionWriter", "SessionReader", "SessionFile", "StepRecord", "StreamData", "step_group_name"]

@@ -3,8 +3,8 @@
 Opens finished sessions, sessions still being written (SWMR read) and sessions whose writer was killed:
 HDF5 refuses a plain read-only open of a file still flagged "open for write", so the reader then falls
 back to ``swmr=True``, which HDF5 allows for SWMR-written files and which needs nothing cleared.
-Streams are returned in SI units, each column cut to the rows every column has (a writer killed between
-columns of one block leaves them one block apart).
+Streams are returned in SI units, cut to the committed rows: the writer marks a block committed only
+after every column of it is flushed, so a block torn by a kill is never returned.
 """
 
 from __future__ import annotations
@@ -172,7 +172,9 @@ class SessionReader:
         rows, expected = {}, {}
         for sname, sg in g.items():
             if isinstance(sg, h5py.Group):
-                rows[sname] = min((self._ds(f"{base}/{sname}/{c}").shape[0] for c in sg), default=0)
+                cols = [st.text(c) for c in sg.attrs["columns"]]
+                n = min((self._ds(f"{base}/{sname}/{c}").shape[0] for c in cols), default=0)
+                rows[sname] = min(n, int(self._ds(f"{base}/{sname}/{st.COMMITTED}")[()]))
                 expected[sname] = int(sg.attrs.get("expected_rows", 0))
         summary = st.read_bytes(self._ds(f"{base}/summary"))
         return StepRecord(
@@ -202,7 +204,7 @@ class SessionReader:
         return [s.index for s in self.steps() if s.status not in st.DONE_STATUSES]
 
     def stream(self, step: int | str | StepRecord, name: str) -> StreamData:
-        """The columns of one stream of one step (SI), cut to the rows every column has."""
+        """The columns of one stream of one step (SI), cut to its committed rows."""
         rec = self.step(step)
         base = rec.group.split("/entry/", 1)[1]
         if name not in self._entry[base] or not isinstance(self._entry[base][name], h5py.Group):

@@ -25,6 +25,7 @@ from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, St
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
 DEFAULT_CHUNK_ROWS = 32768  # when the plan does not know a stream's length
+STEP_DATASETS = ("status", "t_start", "t_end", "wall_start", "wall_end", "summary")
 
 
 def chunk_rows(expected_rows: int) -> int:
@@ -42,6 +43,8 @@ def iso(wall: float) -> str:
 class _Stream:
     spec_columns: tuple[str, ...]
     datasets: list[h5py.Dataset]
+    committed: h5py.Dataset  # rows every column holds, written after the columns are flushed
+    rows: int = 0
 
 
 @dataclass
@@ -154,12 +157,17 @@ class SessionWriter:
             return
         if step.status == "planned":  # a block without StepStart still marks the step as started
             step.set_status("running")
+        old = stream.rows
         for ds, a in zip(stream.datasets, arrays):
-            old = ds.shape[0]
             ds.resize((old + n,))
             ds.write_direct(a, dest_sel=np.s_[old : old + n])
-        for ds in stream.datasets:  # flush after all columns: a reader then sees whole blocks
+        for ds in stream.datasets:
             ds.flush()
+        # The commit mark goes last: a kill between a resize and its data reaching the file could leave
+        # a tail of fill values; readers stop at committed_rows, so a torn block is lost, never garbage.
+        stream.rows = old + n
+        stream.committed[()] = stream.rows
+        stream.committed.flush()
 
     def _transcript(self, ev: Transcript) -> None:
         ds = self._transcripts.get(ev.device) or self._transcripts["_other"]
@@ -179,6 +187,7 @@ class SessionWriter:
         if self.previous_uid is not None:
             self._continue(ev)
         else:
+            check_plan(ev)
             self.path.parent.mkdir(parents=True, exist_ok=True)
             self._f = h5py.File(self.path, "w", libver="latest")
             _create_layout(self._f, ev)
@@ -197,7 +206,8 @@ class SessionWriter:
             for sname, sg in g.items():
                 if isinstance(sg, h5py.Group):
                     cols = tuple(st.text(c) for c in sg.attrs["columns"])
-                    step.streams[sname] = _Stream(cols, [sg[c] for c in cols])
+                    committed = sg[st.COMMITTED]
+                    step.streams[sname] = _Stream(cols, [sg[c] for c in cols], committed, int(committed[()]))
             self._steps[int(g.attrs["index"])] = step
         tr = self._f["entry/transcripts"]
         self._transcripts = {name: tr[name] for name in tr}
@@ -276,7 +286,9 @@ def _reset_step(g: h5py.Group) -> None:
     for sg in g.values():
         if isinstance(sg, h5py.Group):
             for ds in sg.values():
-                ds.resize((0,))
+                if ds.shape:
+                    ds.resize((0,))
+            sg[st.COMMITTED][()] = 0
     g["summary"].resize((0,))
     g["status"][()] = b"planned"
     for key in ("t_start", "t_end", "wall_start", "wall_end"):
@@ -305,6 +317,22 @@ def _provenance(g: h5py.Group, ev: RunStart) -> None:
     st.new_float(g, "start_wall", ev.wall)
     st.new_float(g, "start_t", ev.t)
     st.new_text(g, "resumed_from", ev.resumed_from or "")
+
+
+def check_plan(ev: RunStart) -> None:
+    """A plan the layout can hold: unique step indices, stream and column names that clash with nothing."""
+    seen: set[int] = set()
+    for s in ev.steps:
+        if s.index in seen:
+            raise ValueError(f"plan of run {ev.uid}: step index {s.index} appears twice")
+        seen.add(s.index)
+        names = [sp.name for sp in s.streams]
+        for sp in s.streams:
+            cols = [c.name for c in sp.columns]
+            if sp.name in STEP_DATASETS or names.count(sp.name) > 1 or "/" in sp.name:
+                raise ValueError(f"plan of run {ev.uid}: step {s.index} ({s.name}): stream name {sp.name!r} is reserved or repeated")
+            if not cols or len(set(cols)) != len(cols) or st.COMMITTED in cols or any("/" in c for c in cols):
+                raise ValueError(f"plan of run {ev.uid}: step {s.index} ({s.name}) stream {sp.name}: bad column names {cols}")
 
 
 def _create_layout(f: h5py.File, ev: RunStart) -> None:
@@ -380,5 +408,8 @@ def _create_stream(parent: h5py.Group, spec: StreamSpec) -> None:
                     "columns": np.array([c.name.encode() for c in spec.columns], dtype=st.TEXT)})
     chunk = chunk_rows(spec.expected_rows)
     for col in spec.columns:
-        ds = g.create_dataset(col.name, shape=(0,), maxshape=(None,), dtype=np.float64, chunks=(chunk,))
+        # NaN fill: a row that was allocated but never written reads as missing, not as a zero sample
+        ds = g.create_dataset(col.name, shape=(0,), maxshape=(None,), dtype=np.float64, chunks=(chunk,), fillvalue=np.nan)
         ds.attrs["units"] = col.units
+    ds = g.create_dataset(st.COMMITTED, data=np.int64(0))
+    ds.attrs["units"] = ""

@@ -294,3 +294,25 @@ def test_inspect_bad_files_exit_2_with_one_line(tmp_path, kind):
     r = run_cli("inspect", path)
     assert r.returncode == 2 and r.stdout == ""
     assert len(r.stderr.strip().splitlines()) == 1 and str(path) in r.stderr, r.stderr
+
+
+def test_reader_never_returns_a_torn_block(tmp_path):
+    path, uid = tmp_path / "s.h5", new_uid()
+    w = SessionWriter(path)
+    w(run_start(uid))
+    w(Block(uid, 2, "daq", daq_block(0)))
+    w.close()
+    with h5py.File(path, "a") as f:  # what a kill between a column's resize and the commit mark leaves
+        f["entry/steps/002_p612_step/daq/t_s"].resize((ROWS + 7,))
+        assert np.isnan(f["entry/steps/002_p612_step/daq/t_s"][-1])  # unwritten rows are NaN, never 0
+    with SessionReader(path) as r:
+        assert r.step(2).rows["daq"] == ROWS and r.step(2).status == "running"
+        assert np.array_equal(r.stream(2, "daq")["t_s"], daq_block(0)["t_s"])
+
+
+def test_a_plan_the_layout_cannot_hold_is_refused_before_any_file(tmp_path):
+    start = run_start(new_uid())
+    dup = RunStart(**{**start.__dict__, "steps": start.steps + (start.steps[0],)})
+    with pytest.raises(ValueError, match="twice"):
+        SessionWriter(tmp_path / "s.h5")(dup)
+    assert not (tmp_path / "s.h5").exists()
