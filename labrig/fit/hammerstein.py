@@ -53,6 +53,25 @@ def decimate_record(r: Any, q: int) -> Record:
     return Record(r.fs / q, dec(r.v), dec(r.i), dec(r.delta))
 
 
+def synthetic_records(truth: HammersteinParams, fs: float = 250.0, duration: float = 4.0,
+                      amplitudes: tuple[float, ...] = (1.0, 2.5), noise: float = 0.002, seed: int = 0,
+                      f_slow: float = 0.4, band: tuple[float, float] = (8.0, 40.0)) -> list[Record]:
+    """Seed-001-like records from known parameters (tests, benchmark): per amplitude a slow sine (the
+    electric nonlinearity and the integrator leak show) and a multisine on ``band`` (2 Hz grid, random
+    phases) around the first mode; white noise of ``noise`` times each signal's std is added."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(int(round(duration * fs))) / fs
+    f = np.arange(band[0], band[1] + 1e-9, 2.0)
+    ms = np.sin(2 * np.pi * f[:, None] * t + rng.uniform(0, 2 * np.pi, (len(f), 1))).sum(axis=0)
+    drives = [a * w for a in amplitudes for w in (np.sin(2 * np.pi * f_slow * t), ms / np.abs(ms).max())]
+    out = []
+    for v in drives:
+        i, d = hm.simulate(truth, v, fs)
+        out.append(Record(fs, v, i + noise * i.std() * rng.standard_normal(i.shape),
+                          d + noise * d.std() * rng.standard_normal(d.shape)))
+    return out
+
+
 @dataclass(frozen=True)
 class Group:
     """Records sharing one rate, stacked (R, N) and zero-padded at the end (the model is causal)."""
@@ -211,10 +230,11 @@ class HammersteinFit:
 
 
 def knee_point(F: np.ndarray) -> int:
-    """Knee rule: the front point nearest the utopia point after scaling each objective to [0, 1] on the front."""
+    """Knee rule: scale each objective by its best value on the front (f / min f, so the utopia point is
+    (1, 1) and a 1 % rise counts the same in either error) and take the point nearest the utopia.
+    Scaling by the front's range instead lets noise-level differences in one error decide (docs)."""
     F = np.asarray(F, float)
-    span = np.ptp(F, axis=0)
-    Fn = (F - F.min(axis=0)) / np.where(span > 0, span, 1.0)
+    Fn = F / np.maximum(F.min(axis=0), 1e-300) - 1.0
     return int(np.argmin(np.hypot(Fn[:, 0], Fn[:, 1])))
 
 
