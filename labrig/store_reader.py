@@ -107,6 +107,11 @@ class SessionReader:
         return st.text(self._entry.attrs["run_uid"])
 
     @property
+    def last_uid(self) -> str:
+        """The uid of the last run written into this session (differs from ``uid`` after a resume)."""
+        return st.text(self._entry.attrs["last_run_uid"])
+
+    @property
     def protocol(self) -> str:
         return st.text(self._entry.attrs["protocol"])
 
@@ -174,7 +179,9 @@ class SessionReader:
             if isinstance(sg, h5py.Group):
                 cols = [st.text(c) for c in sg.attrs["columns"]]
                 n = min((self._ds(f"{base}/{sname}/{c}").shape[0] for c in cols), default=0)
-                rows[sname] = min(n, int(self._ds(f"{base}/{sname}/{st.COMMITTED}")[()]))
+                if st.COMMITTED in sg:  # absent in files written before the commit mark existed
+                    n = min(n, int(self._ds(f"{base}/{sname}/{st.COMMITTED}")[()]))
+                rows[sname] = n
                 expected[sname] = int(sg.attrs.get("expected_rows", 0))
         summary = st.read_bytes(self._ds(f"{base}/summary"))
         return StepRecord(
@@ -260,12 +267,26 @@ class SessionReader:
         elif status != "success":
             reason = self.reason
             out.append(f"run ended with exit status {status}" + (f": {reason}" if reason else ""))
+        never: list[StepRecord] = []  # a run of never-started steps is one line, not one per step
+
+        def flush_never() -> None:
+            if len(never) == 1:
+                out.append(f"step {never[0].index} {never[0].name}: never started")
+            elif never:
+                out.append(f"steps {never[0].index}-{never[-1].index} ({len(never)} steps, {never[0].name} .. {never[-1].name}): never started")
+            never.clear()
+
         for s in self.steps():
+            if s.status == "planned":
+                never.append(s)
+                continue
+            flush_never()
             if s.status not in st.DONE_STATUSES:
-                what = {"planned": "never started", "running": "interrupted while running"}.get(s.status, s.status)
+                what = {"running": "interrupted while running"}.get(s.status, s.status)
                 out.append(f"step {s.index} {s.name}: {what}")
             for name, n in s.rows.items():
                 want = s.expected_rows.get(name, 0)
                 if s.status != "skipped" and want and n < want:
                     out.append(f"step {s.index} {s.name}: stream {name} has {n} of {want} rows")
+        flush_never()
         return out

@@ -84,7 +84,9 @@ class SessionWriter:
         self._steps: dict[int, _Step] = {}
         self._transcripts: dict[str, h5py.Dataset] = {}
         self._lock_fd: int | None = None
-        self.previous_uid: str | None = None  # set by resume(): the run RunStart.resumed_from must name
+        self.previous_uid: str | None = None  # set by resume(): the last run written into this session
+        self._history: tuple[str, ...] = ()  # resume(): every run uid of the session (resumed_from may name any)
+        self._resuming = False
         self.done_steps: list[int] = []  # resume(): steps already done, which the runner skips
 
     # ------------------------------------------------------------ events
@@ -182,9 +184,9 @@ class SessionWriter:
     # ------------------------------------------------------------ layout
 
     def _run_start(self, ev: RunStart) -> None:
-        if self._f is not None and self.previous_uid is None:
+        if self._f is not None and not self._resuming:
             raise RuntimeError(f"{self.path}: a second RunStart while run {self.uid} is open")
-        if self.previous_uid is not None:
+        if self._resuming:
             self._continue(ev)
         else:
             check_plan(ev)
@@ -243,6 +245,10 @@ class SessionWriter:
         f = st.open_for_update(path)
         try:
             w.previous_uid = st.text(f["entry"].attrs["last_run_uid"])
+            resumes = f["entry/provenance"].get("resumes", {})
+            w._history = (st.text(f["entry"].attrs["run_uid"]), w.previous_uid,
+                          *(st.text(g["run_uid"][()]) for g in resumes.values()))
+            w._resuming = True
             for gname in f["entry/steps"]:
                 g = f["entry/steps"][gname]
                 if st.text(g["status"][()]) in st.DONE_STATUSES:
@@ -261,8 +267,8 @@ class SessionWriter:
         return w
 
     def _continue(self, ev: RunStart) -> None:
-        if ev.resumed_from != self.previous_uid:
-            raise ValueError(f"{self.path}: RunStart.resumed_from must be {self.previous_uid!r}, got {ev.resumed_from!r}")
+        if ev.resumed_from not in self._history:
+            raise ValueError(f"{self.path}: RunStart.resumed_from must name a run of this session ({self.previous_uid!r}), got {ev.resumed_from!r}")
         f = self._f
         have = [_plan_key(f["entry/steps"][g]) for g in f["entry/steps"]]
         want = [_spec_key(s) for s in ev.steps]
@@ -279,7 +285,7 @@ class SessionWriter:
             if dev not in tr:
                 st.new_bytes(tr, dev)
         f["entry"].attrs["last_run_uid"] = ev.uid
-        self.previous_uid = None
+        self._resuming = False
 
 
 def _reset_step(g: h5py.Group) -> None:

@@ -246,6 +246,15 @@ def test_resume_keeps_done_steps_and_redoes_the_interrupted_one(killed_session):
         assert r.stream(0, "force")["force_N"].tolist() == [9.8] * 50  # the first run's data is kept
         assert [x["uid"] for x in r.resumes] == [uid2] and r.resumes[0]["resumed_from"] == uid
         assert r.incomplete() == ["step 2 p612/step: stream daq has 1500 of 1000000000 rows"]
+        assert (r.uid, r.last_uid) == (uid, uid2)
+    w = SessionWriter.resume(path)  # a second resume: everything is done, the first run's uid is accepted too
+    assert (w.done_steps, w.previous_uid) == ([0, 1, 2], uid2)
+    uid3 = new_uid()
+    w(run_start(uid3, resumed_from=uid, daq_rows=10**9))
+    w(RunStop(uid3, "success", "nothing left", 102.0))
+    with SessionReader(path) as r:
+        assert [x["uid"] for x in r.resumes] == [uid2, uid3] and r.exit_status == "success"
+        assert r.stream(2, "daq").rows == 3 * ROWS
 
 
 def test_resume_refuses_a_different_plan(tmp_path):
