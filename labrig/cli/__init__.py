@@ -28,6 +28,8 @@ def _register() -> None:
     except ImportError:  # not there yet in this tree
         return
     session_cmds.register(app)
+    from labrig.cli import live_cmds
+    live_cmds.register(app)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,0 +1,368 @@
+"""Replay a recorded session: into the live window, or against the runner (``--check``).
+
+``check(path)`` re-runs the session's protocol (its stored config) on a rig whose drivers answer from
+the session's own transcripts: the DAQ through ``DaqRig.from_replay``, the laser and the clamp motor
+through ``ReplaySerial``, the analyser through ``ReplayMessages`` and the load cell through
+``StreamReplay`` below. The clock is virtual (``sleep`` advances it at once), so nothing waits. Every
+command the protocol sends must match the recording exactly (else ``ReplayMismatch`` names it) and
+every ``daq`` and ``eis`` block the runner emits must equal the stored rows bit for bit. The load-cell
+stream depends on when it was polled, so ``force`` is compared loosely: each replayed value must lie
+within the step's recorded range widened by ``FORCE_SLACK_N``.
+
+Regenerate the recorded test sessions: ``python -m labrig.replay --regenerate tests/data/sessions``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from drivers.clamp import MotorClamp, OperatorClamp
+from drivers.daq import DaqRig
+from drivers.errors import ReplayMismatch
+from drivers.impedance_analyzer import ImpedanceAnalyzer
+from drivers.keyence import open_keyence
+from drivers.loadcell import LoadCell
+from drivers.transcript import Exchange, ReplayMessages, ReplaySerial, Transcript
+from labrig.errors import BadInput
+from labrig.events import Block, Event, RunStart, StepStart
+from labrig.rig import Rig, parse_rig
+from labrig.store_reader import SessionReader
+
+FORCE_SLACK_N = 1.0
+EXACT_STREAMS = ("daq", "eis")
+
+
+class VirtualClock:
+    """A rig clock that never waits: ``sleep`` advances simulated time at once (thread-safe)."""
+
+    time_scale = 1e6  # the force logger derives its wall polling period from this: keep it at its floor
+
+    def __init__(self, t0: float = 0.0):
+        self._t, self._lock = float(t0), threading.Lock()
+
+    def now(self) -> float:
+        return self._t
+
+    def sleep(self, seconds: float) -> None:
+        if seconds > 0:
+            with self._lock:
+                self._t += seconds
+
+    def sleep_until(self, t: float) -> None:
+        self.sleep(t - self.now())
+
+    def wait(self, event: threading.Event, seconds: float) -> bool:
+        if event.is_set():
+            return True
+        self.sleep(seconds)
+        return event.is_set()
+
+
+class StreamReplay:
+    """A pyserial-like port replaying a streaming instrument (the load cell) against the other devices.
+
+    All devices share one transcript clock, so a recorded frame is released once the replay has reached
+    the recorded exchange of another device that came after it: the frames the runner saw while it
+    waited for, say, the clamp to settle are exactly those before the next command of any other
+    instrument. Writes (zero, tare) must match the recording in order.
+    """
+
+    def __init__(self, exchanges: list[Exchange], others: list[Any], device: str = "loadcell"):
+        self.device, self.others = device, others
+        self._reads = [e for e in exchanges if e.op == "read"]
+        self._writes = [e for e in exchanges if e.op == "write"]
+        self._r = self._w = 0
+        self._buf = bytearray()
+        self._lock = threading.Lock()
+        self.timeout = 0.0
+        self.is_open = True
+
+    def _horizon(self) -> float:
+        """Recorded time of the next exchange any other device still waits to replay (inf: all done)."""
+        times = []
+        for rep in self.others:
+            ex, pos = rep._ex, rep._pos  # the replayers' cursors (drivers.transcript)
+            if isinstance(rep, ReplaySerial):
+                nxt = next((e for e in ex[pos:] if e.op == "write"), None)
+            else:
+                nxt = ex[pos] if pos < len(ex) else None
+            if nxt is not None:
+                times.append(nxt.t)
+        return min(times, default=math.inf)
+
+    def _release(self) -> None:
+        h = self._horizon()
+        while self._r < len(self._reads) and self._reads[self._r].t <= h:
+            self._buf += self._reads[self._r].payload
+            self._r += 1
+
+    @property
+    def in_waiting(self) -> int:
+        with self._lock:
+            self._release()
+            return len(self._buf)
+
+    def read(self, size: int = 1) -> bytes:
+        with self._lock:
+            self._release()
+            out = bytes(self._buf[:size])
+            del self._buf[:size]
+            return out
+
+    def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
+        with self._lock:
+            self._release()
+            i = self._buf.find(expected)
+            n = len(self._buf) if i < 0 else i + len(expected)
+            n = n if size is None else min(n, size)
+            out = bytes(self._buf[:n])
+            del self._buf[:n]
+            return out
+
+    def write(self, data: bytes) -> int:
+        nxt = self._writes[self._w] if self._w < len(self._writes) else None
+        if nxt is None or nxt.payload != bytes(data):
+            raise ReplayMismatch(self.device, f"sent {bytes(data)!r} but the recording expects {'end of recording' if nxt is None else repr(nxt.payload)}")
+        self._w += 1
+        return len(data)
+
+    def reset_input_buffer(self) -> None:
+        with self._lock:
+            self._buf.clear()
+
+    def flush(self) -> None:
+        pass
+
+    def close(self) -> None:
+        self.is_open = False
+
+
+@dataclass
+class ReplayRig:
+    rig: Rig
+    replayers: dict[str, Any]  # device -> CallReplayer / ReplaySerial / ReplayMessages (their exhausted flags)
+
+    def close(self) -> None:
+        # nothing real to release; closing the drivers would send traffic the recording does not hold
+        self.rig.loadcell.close()
+
+
+def replay_rig(reader: SessionReader) -> ReplayRig:
+    """A Rig whose drivers answer from the session's transcripts (instrument settings from its rig config)."""
+    data = {k: v for k, v in reader.rig.items() if k in ("clock", "sample", "safety", "instruments")}
+    cfg = parse_rig(data, f"{reader.path} (rig as recorded)")
+    tr = {dev: Transcript.loads(reader.transcript(dev)) for dev in ("daq", "impedance", "keyence", "loadcell", "clamp")}
+    ins = cfg.instruments
+    d = ins.daq
+    # DaqRig.from_replay's ``device`` is the transcript's device name and shadows the NI device name the
+    # recorded call arguments hold, so build the replaying rig the way from_replay does, with both
+    daq = DaqRig(name="daq", replay=tr["daq"].replay_calls("daq"), device=d.device, drive_channel=d.drive_channel, voltage_channel=d.voltage_channel,
+                             current_channel=d.current_channel, displacement_channel=d.displacement_channel,
+                             current_gain_A_per_V=d.current_gain_A_per_V, displacement_m_per_V=d.displacement_m_per_V)
+    reps: dict[str, Any] = {"daq": daq._replay}
+    reps["impedance"] = ReplayMessages(tr["impedance"].for_device("impedance"), "impedance")
+    reps["keyence"] = ReplaySerial(tr["keyence"].for_device("keyence"), "keyence")
+    analyzer = ImpedanceAnalyzer(reps["impedance"], sweep_timeout_s=600.0)
+    laser = open_keyence(reps["keyence"], dialect=ins.keyence.dialect)
+    if ins.clamp.mode == "motor":
+        reps["clamp"] = ReplaySerial(tr["clamp"].for_device("clamp"), "clamp")
+        clamp: Any = MotorClamp(reps["clamp"], max_force_N=cfg.safety.max_force_N)
+    else:
+        clamp = OperatorClamp(ask=lambda msg: None)  # the operator already did it: the load cell replay says so
+    cell_port = StreamReplay(tr["loadcell"].for_device("loadcell"), list(reps.values()))
+    loadcell = LoadCell(cell_port, stale_s=60.0)
+    start = [s.t_start for s in reader.steps() if math.isfinite(s.t_start)]
+    clock = VirtualClock(min(start) if start else 0.0)
+    return ReplayRig(Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp), reps)  # type: ignore[arg-type]
+
+
+@dataclass
+class CheckResult:
+    ok: bool
+    message: str
+    steps: int = 0
+    blocks: int = 0
+    notes: list[str] = field(default_factory=list)
+
+
+class _Comparer:
+    """Runner subscriber: each new block against the recorded rows of the same step and stream."""
+
+    def __init__(self, reader: SessionReader, stop: Any):
+        self.reader, self.stop = reader, stop
+        self.recorded = {s.index: s for s in reader.steps()}
+        self._data: dict[tuple[int, str], Any] = {}
+        self.offset: dict[tuple[int, str], int] = {}
+        self.first: str | None = None
+        self.step: int | None = None
+        self.blocks = 0
+        self.steps_started = 0
+
+    def _fail(self, msg: str) -> None:
+        if self.first is None:
+            self.first = msg
+            self.stop()
+
+    def _rec(self, index: int, stream: str) -> Any:
+        key = (index, stream)
+        if key not in self._data:
+            rec = self.recorded.get(index)
+            self._data[key] = self.reader.stream(index, stream) if rec is not None and stream in rec.rows else None
+        return self._data[key]
+
+    def where(self, index: int | None) -> str:
+        rec = self.recorded.get(index) if index is not None else None
+        return f"step {index} ({rec.name})" if rec is not None else f"step {index}"
+
+    def __call__(self, ev: Event) -> None:
+        if isinstance(ev, RunStart):
+            planned = [(p.index, p.name) for p in ev.steps]
+            stored = [(s.index, s.name) for s in self.recorded.values()]
+            if planned != stored:
+                self._fail(f"the protocol plans steps {[n for _, n in planned]} but the session holds {[n for _, n in stored]}")
+        elif isinstance(ev, StepStart):
+            self.step = ev.index
+            self.steps_started += 1
+        elif isinstance(ev, Block):
+            self.blocks += 1
+            self._block(ev)
+
+    def _block(self, ev: Block) -> None:
+        where = f"{self.where(ev.index)}, stream {ev.stream}"
+        rec = self._rec(ev.index, ev.stream)
+        if rec is None:
+            return self._fail(f"{where}: the session holds no such stream")
+        n, off = len(ev), self.offset.get((ev.index, ev.stream), 0)
+        self.offset[(ev.index, ev.stream)] = off + n
+        if ev.stream not in EXACT_STREAMS:  # force: polling-time dependent, compared loosely
+            f = np.asarray(ev.data.get("force_N", []))
+            ref = rec.get("force_N")
+            if ref is not None and len(ref) and len(f):
+                lo, hi = float(np.min(ref)) - FORCE_SLACK_N, float(np.max(ref)) + FORCE_SLACK_N
+                bad = f[(f < lo) | (f > hi)]
+                if bad.size:
+                    self._fail(f"{where}: force {bad[0]:.3f} N outside the recorded {lo + FORCE_SLACK_N:.3f}..{hi - FORCE_SLACK_N:.3f} N (± {FORCE_SLACK_N} N)")
+            return
+        if off + n > rec.rows:
+            return self._fail(f"{where}: rows {off}..{off + n} replayed but the session holds {rec.rows}")
+        for col, arr in ev.data.items():
+            want = rec[col][off : off + n]
+            diff = np.flatnonzero(~((arr == want) | (np.isnan(arr) & np.isnan(want))))
+            if diff.size:
+                k = int(diff[0])
+                return self._fail(f"{where}: {col}[{off + k}] = {arr[k]!r} replayed, {want[k]!r} recorded")
+
+    def unmatched_rows(self) -> str | None:
+        for s in self.recorded.values():
+            for name, rows in s.rows.items():
+                got = self.offset.get((s.index, name), 0)
+                if name in EXACT_STREAMS and got != rows:
+                    return f"{self.where(s.index)}, stream {name}: {got} rows replayed, {rows} recorded"
+        return None
+
+
+def check(path: str | Path) -> CheckResult:
+    """Re-run the session's protocol against its recorded traffic; PASS or the first divergence."""
+    from labrig.runner import Runner
+    from protocols import registry
+
+    with SessionReader(path) as reader:
+        protocol = registry.from_dict(reader.config, f"{path} (protocol as run)")
+        rr = replay_rig(reader)
+        runner = Runner(rr.rig, protocol, uid=reader.uid)
+        cmp = _Comparer(reader, runner.request_stop)
+        runner.subscribers.append(cmp)
+        recorded_status = reader.exit_status
+        last_started = max((s.index for s in reader.steps() if math.isfinite(s.t_start)), default=-1)
+        if recorded_status == "abort":  # the operator stopped it: stop the replay where the recording ends
+            runner.subscribers.append(lambda ev: runner.request_stop() if isinstance(ev, StepStart) and ev.index >= last_started else None)
+        try:
+            result = runner.run()
+        finally:
+            rr.close()
+        ok = cmp.first is None
+        msg = cmp.first or ""
+        if ok and result.exit_status == "fail":
+            ok, msg = False, f"{cmp.where(cmp.step)}: {result.reason}"
+        if ok and recorded_status and result.exit_status != recorded_status:
+            ok, msg = False, f"run ended {result.exit_status} ({result.reason}) but the recording ended {recorded_status}"
+        if ok and (miss := cmp.unmatched_rows()):
+            ok, msg = False, miss
+        if ok:
+            left = [dev for dev, rep in rr.replayers.items() if not rep.exhausted]
+            if left:
+                ok, msg = False, f"the recording holds more traffic for {', '.join(left)} than the protocol sent"
+        notes = [f"force compared loosely (recorded range ± {FORCE_SLACK_N} N): it depends on when the load cell was polled"]
+        if ok:
+            msg = f"PASS: {cmp.steps_started} steps, {cmp.blocks} blocks, every command and every daq/eis sample as recorded"
+        else:
+            msg = f"FAIL: {msg}"
+        return CheckResult(ok, msg, cmp.steps_started, cmp.blocks, notes)
+
+
+def check_exit_code(path: str | Path) -> tuple[int, str]:
+    """(exit code, report line): 0 pass, 1 divergence; ``BadInput`` (exit 2) for a bad file."""
+    p = Path(path)
+    if not p.exists():
+        raise BadInput(f"{path}: no such file")
+    res = check(p)
+    return (0 if res.ok else 1), res.message
+
+
+def replay_live(path: str | Path, speed: float = 1.0, screenshot: str | Path | None = None) -> int:
+    """Play the session's events into the live window; returns the number of events played."""
+    from labrig.live.app import new_window, run_in_window
+    from labrig.live.model import LiveModel
+    from labrig.live.player import play, session_events
+
+    events = session_events(str(path))
+    model = LiveModel()
+    stop = threading.Event()
+    win = new_window(model, stop.set, f"labrig replay: {Path(path).name} ({'max' if speed == 0 else f'{speed:g}x'} speed)")
+    return run_in_window(win, lambda: play(events, model, speed, stop), screenshot=screenshot)
+
+
+def regenerate(folder: str | Path, seed: int = 7) -> list[Path]:
+    """Record the test sessions (each ``*.toml`` in ``folder``) on the simulated bench and fit them."""
+    import gzip
+    import io
+    import tempfile
+    from contextlib import redirect_stdout
+
+    from labrig.cli import main as cli_main
+    from labrig.session_run import RunRequest, execute
+
+    out = []
+    for toml in sorted(Path(folder).glob("*.toml")):
+        with tempfile.TemporaryDirectory() as tmp:
+            h5 = Path(tmp) / f"{toml.stem}.h5"
+            res = execute(RunRequest(protocol=str(toml), path=h5, seed=seed))
+            if res.exit_code != 0:
+                raise RuntimeError(f"{toml}: run ended {res.exit_status}: {res.reason}")
+            buf = io.StringIO()
+            with redirect_stdout(buf):
+                if cli_main(["fit", str(h5), "--json"]) != 0:
+                    raise RuntimeError(f"{toml}: labrig fit failed")
+            fit = json.loads(buf.getvalue())
+            target = Path(folder) / f"{toml.stem}.h5.gz"
+            target.write_bytes(gzip.compress(h5.read_bytes(), 9, mtime=0))
+            (Path(folder) / f"{toml.stem}.fit.json").write_text(json.dumps(fit, indent=2, sort_keys=True) + "\n")
+            out.append(target)
+    return out
+
+
+if __name__ == "__main__":
+    import argparse
+
+    ap = argparse.ArgumentParser(prog="python -m labrig.replay")
+    ap.add_argument("--regenerate", metavar="FOLDER", required=True, help="record the test sessions of FOLDER's *.toml")
+    ap.add_argument("--seed", type=int, default=7)
+    for p in regenerate(ap.parse_args().regenerate, ap.parse_args().seed):
+        print(p, p.stat().st_size, "bytes")
