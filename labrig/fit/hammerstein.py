@@ -292,8 +292,9 @@ def _ga(spec: Spec, pop_size: int, n_gen: int, seed: int, executor) -> tuple[np.
     from pymoo.optimize import minimize
 
     with PopulationMap(evaluate_chunk, (spec,), executor) as fmap:
-        res = minimize(_pymoo_problem(fmap, len(spec.free), 1, spec.free), GA(pop_size=pop_size, eliminate_duplicates=True),
-                       ("n_gen", n_gen), seed=seed, verbose=False)
+        problem = _pymoo_problem(fmap, len(spec.free), 1, spec.free)
+        res = minimize(problem, GA(pop_size=pop_size, eliminate_duplicates=True), ("n_gen", n_gen), seed=seed,
+                       verbose=False)
         return from_unit(np.atleast_2d(res.X)[0], spec.free), fmap.n_evals
 
 

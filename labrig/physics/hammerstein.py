@@ -37,6 +37,7 @@ ELECTRIC_BASE = ("R_s", "C_dl", "g1")
 MECH_NAMES = ("K", "eps", "wn", "zeta")
 
 Cols = dict[str, np.ndarray]  # parameter name -> per-row values
+MAX_ROWS = 1024  # rows (candidates x records) stepped together; measured sweet spot on 2 cores
 
 
 @dataclass(frozen=True)
@@ -138,6 +139,9 @@ def electric_batch(theta_e: np.ndarray, v: np.ndarray, fs: float, law: str) -> n
     theta_e = np.atleast_2d(np.asarray(theta_e, float))
     V = np.atleast_2d(np.asarray(v, float))
     P, (R, N) = theta_e.shape[0], V.shape
+    block = max(1, MAX_ROWS // R)
+    if P > block:  # bounded blocks: past ~1000 rows the (N, rows) arrays fall out of cache (docs)
+        return np.concatenate([electric_batch(theta_e[s:s + block], v, fs, law) for s in range(0, P, block)])
     names = electric_names(law)
     c = {n: np.repeat(theta_e[:, j], R) for j, n in enumerate(names)}  # rows: candidate-major
     lam = (1.0 / c["R_s"] + c["g1"]) / c["C_dl"]
@@ -146,8 +150,10 @@ def electric_batch(theta_e: np.ndarray, v: np.ndarray, fs: float, law: str) -> n
     E, phi1, phi2 = _phis(-lam * h)
     A1, A2 = h * (phi1 + phi2), h * phi2  # ETD2: h[(phi1+phi2) G_k - phi2 G_{k-1}]
     Vt = np.tile(V, (P, 1)).T  # (N, M), time-major so each step reads a contiguous row
-    dV = np.diff(Vt, axis=0, append=Vt[-1:])
-    U = (h * b) * (phi1 * Vt + phi2 * dV)  # exact response to V linear between samples
+    U = np.diff(Vt, axis=0, append=Vt[-1:])  # U = h b (phi1 V_k + phi2 dV_k): exact for V linear in a step
+    U *= phi2
+    U += phi1 * Vt
+    U *= h * b
     bVt = b * Vt if LAWS[law].needs_bV else Vt
     G_fn = LAWS[law].remainder
     c = _law_consts(law, c)
