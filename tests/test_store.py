@@ -262,6 +262,9 @@ def test_resume_refuses_a_different_plan(tmp_path):
     w = SessionWriter(path)
     w(run_start(uid))
     w.close()  # no RunStop: interrupted
+    with SessionReader(path) as r:
+        assert r.incomplete() == ["no RunStop: the run did not finish (crashed, killed or still running)",
+                                  "steps 0-2 (3 steps, p612/clamp .. p612/step): never started"]
     w = SessionWriter.resume(path)
     other = run_start(new_uid(), resumed_from=uid)
     other = RunStart(**{**other.__dict__, "steps": other.steps[:2]})
