@@ -52,3 +52,5 @@ class ScaledClock:
 def wall_clock() -> ScaledClock:
     """The clock of a real bench."""
     return ScaledClock(1.0)
+
+SIM_TIME_SCALE = 1000.0  # default speed of a simulated bench: a 40-minute sweep in a few seconds

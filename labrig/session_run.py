@@ -28,26 +28,18 @@ class RunRequest:
     extra_subscribers: list[Any] = field(default_factory=list)
 
 
-def _resume_state(path: Path) -> tuple[str, list[str], str]:
-    """(protocol config as TOML-able dict source, done step names, run uid) of an interrupted session."""
+def _protocol_as_run(path: Path) -> registry.LoadedProtocol:
     from labrig.store import SessionReader
 
     with SessionReader(path) as r:
-        done = [s.name for s in r.steps() if s.status in ("done", "skipped")]
-        return r.config, done, r.uid
+        return registry.from_dict(dict(r.config), f"{path} (protocol as run)")
 
 
 def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
     """Open the rig, run the protocol with the store (and progress/live plot) subscribed, close the rig."""
     from labrig.store import SessionWriter
 
-    done: list[str] = []
-    resumed_from = None
-    if req.resume:
-        config, done, resumed_from = _resume_state(req.path)
-        protocol = registry.from_dict(config, f"{req.path} (protocol as run)")
-    else:
-        protocol = registry.load(req.protocol)
+    protocol = _protocol_as_run(req.path) if req.resume else registry.load(req.protocol)
     with ExitStack() as stack:
         if req.sim:
             from labrig.simulate import simulated_rig
@@ -58,8 +50,9 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
             stack.callback(rig.close)
         writer = SessionWriter.resume(req.path) if req.resume else SessionWriter(req.path)
         subs: list[Any] = [writer, *req.extra_subscribers]
-        runner = Runner(rig, protocol, subs, done=done, resumed_from=resumed_from)
+        runner = Runner(rig, protocol, subs, resumed_from=writer.previous_uid if req.resume else None)
         steps = runner.plan()
+        runner.done = {steps[i].name for i in writer.done_steps if i < len(steps)}
         if not req.quiet:
             from labrig.progress import ProgressDisplay
 

@@ -13,7 +13,7 @@ from labrig.rig import Rig, open_rig, parse_rig
 from mock_devices.simbench import SimulatedInstruments
 from mock_devices.world import Bench, Effect
 
-DEFAULT_TIME_SCALE = 1000.0
+from labrig.clock import SIM_TIME_SCALE as DEFAULT_TIME_SCALE
 
 
 def rig_file_data(sims: SimulatedInstruments, clock: ScaledClock, preset: str, safety: dict | None = None) -> dict:

@@ -13,7 +13,7 @@ import click
 import tomli_w
 
 from labrig.errors import BadInput
-from labrig.simulate import DEFAULT_TIME_SCALE
+from labrig.clock import SIM_TIME_SCALE as DEFAULT_TIME_SCALE
 
 
 def _effects(scenario: str, seed: int) -> list[Any]:
@@ -52,7 +52,7 @@ class _Interrupts:
 
 
 @click.command("run")
-@click.argument("protocol")
+@click.argument("protocol", required=False)
 @click.option("--sim", is_flag=True, help="run on a fresh simulated bench in this process")
 @click.option("--rig", "rig_path", type=click.Path(dir_okay=False), help="rig file of real (or `labrig sim`) instruments")
 @click.option("--scenario", default="none", show_default=True, help="hidden effect(s) on the simulated bench, joined with '+'")
@@ -66,11 +66,17 @@ class _Interrupts:
 @click.option("--diagnose", "do_diagnose", is_flag=True, help="diagnose straight after the fit")
 @click.option("-q", "--quiet", is_flag=True, help="no progress display")
 def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, quiet) -> None:
-    """Run PROTOCOL (a bundled name such as paper-sweep, or a TOML file) and store every sample."""
+    """Run PROTOCOL (a bundled name such as paper-sweep, or a TOML file) and store every sample.
+
+    With --resume FILE.h5, continue the protocol stored in that session from its first unfinished step."""
     from labrig.session_run import RunRequest, execute
 
     if sim == bool(rig_path):
         raise BadInput("give exactly one of --sim or --rig RIG.toml")
+    if not protocol and not resume_path:
+        raise BadInput("give a PROTOCOL (a bundled name or a TOML file), or --resume FILE.h5")
+    if protocol and resume_path:
+        raise BadInput("--resume continues the protocol stored in the session: do not name one")
     if resume_path and out:
         raise BadInput("--resume appends to its own file: do not give --out")
     if not resume_path and not out:

@@ -1,0 +1,128 @@
+"""``labrig run`` / ``labrig sim`` / ``labrig inspect`` from the command line: a crash, a resume, bad input."""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from labrig.store import SessionReader
+
+LABRIG = [sys.executable, "-m", "labrig"]
+
+
+def run(*args, **kw):
+    return subprocess.run([*LABRIG, *args], capture_output=True, text=True, **kw)
+
+
+def _steps_done(path):
+    try:
+        with SessionReader(path) as r:
+            return sum(s.status == "done" for s in r.steps())
+    except Exception:
+        return 0
+
+
+SHORT_SWEEP = """protocol = "paper-sweep"
+rest_s = 5.0
+[clamp]
+pressures_kPa = [612, 3062]
+settle_s = 10.0
+[eis]
+points = 11
+[step]
+on_s = 10.0
+off_s = 10.0
+[harmonic]
+frequency_Hz = 0.5
+[stepped_sine]
+f_start_Hz = 0.5
+points = 6
+"""
+
+
+def test_kill_9_then_resume_completes_the_session(tmp_path):
+    out = tmp_path / "s.h5"
+    proto = tmp_path / "short-sweep.toml"
+    proto.write_text(SHORT_SWEEP)
+    proc = subprocess.Popen([*LABRIG, "run", str(proto), "--sim", "--quiet", "--time-scale", "200", "--out", str(out)])
+    try:
+        deadline = time.time() + 120
+        while _steps_done(out) < 6 and time.time() < deadline:
+            time.sleep(0.2)
+        assert proc.poll() is None, "the run ended before it could be killed"
+        proc.send_signal(signal.SIGKILL)
+        proc.wait()
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    info = json.loads(run("inspect", str(out), "--json").stdout)
+    statuses = [s["status"] for s in info["steps"]]
+    done_before = statuses.count("done")
+    assert done_before >= 6 and info["exit_status"] in (None, "")
+    assert "running" in statuses or "planned" in statuses
+    assert info["incomplete"]
+    r = run("run", "--resume", str(out), "--sim", "--quiet")
+    assert r.returncode == 0, r.stderr
+    with SessionReader(out) as s:
+        assert s.exit_status == "success"
+        steps = s.steps()
+        assert all(st.status == "done" for st in steps)
+        assert all(st.rows.get("daq", 0) == st.expected_rows.get("daq", 0) for st in steps)
+
+
+@pytest.mark.parametrize(
+    "args, word",
+    [
+        (("run", "step", "--out", "x.h5"), "exactly one of --sim or --rig"),
+        (("run", "step", "--sim"), "--out FILE.h5 is required"),
+        (("run", "nosuch.toml", "--sim", "--out", "x.h5"), "nosuch.toml: no such protocol file"),
+        (("run", "step", "--rig", "missing-rig.toml", "--out", "x.h5"), "missing-rig.toml: no such rig file"),
+        (("run", "step", "--sim", "--scenario", "gremlins", "--out", "x.h5"), "unknown scenario 'gremlins'"),
+        (("inspect", "missing.h5"), "missing.h5"),
+    ],
+)
+def test_bad_run_input_exit_2_one_line(tmp_path, args, word):
+    r = run(*args, cwd=tmp_path)
+    assert r.returncode == 2, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and word in lines[0], r.stderr
+
+
+def test_bad_rig_file_names_the_field(tmp_path):
+    rig = tmp_path / "rig.toml"
+    rig.write_text('[instruments.keyence]\naddress = "socket://127.0.0.1:1"\n[instruments.loadcell]\naddress = "x"\n'
+                   '[instruments.impedance]\naddress = "y"\n[instruments.daq]\naddres = "z"\n')
+    r = run("run", "step", "--rig", str(rig), "--out", str(tmp_path / "s.h5"))
+    assert r.returncode == 2 and "instruments.daq.addres: unknown field" in r.stderr
+
+
+def test_existing_session_is_never_overwritten(tmp_path):
+    out = tmp_path / "s.h5"
+    out.write_bytes(b"precious")
+    r = run("run", "step", "--sim", "--out", str(out))
+    assert r.returncode == 2 and "already exists" in r.stderr and out.read_bytes() == b"precious"
+
+
+def test_labrig_sim_serves_a_rig_that_labrig_run_accepts(tmp_path):
+    rig = tmp_path / "rig.toml"
+    sim = subprocess.Popen([*LABRIG, "sim", "--rig-out", str(rig), "--time-scale", "1000"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.time() + 30
+        while not rig.exists() and time.time() < deadline:
+            time.sleep(0.1)
+        assert rig.exists()
+        text = rig.read_text()
+        for table in ("[instruments.keyence]", "[instruments.loadcell]", "[instruments.impedance]", "[instruments.daq]"):
+            assert table in text
+        assert "127.0.0.1" in text and "0.0.0.0" not in text
+        r = run("run", "step", "--rig", str(rig), "--quiet", "--out", str(tmp_path / "s.h5"))
+        assert r.returncode == 0, r.stderr
+        with SessionReader(tmp_path / "s.h5") as s:
+            assert s.exit_status == "success" and s.stream(2, "daq").rows > 1000
+    finally:
+        sim.send_signal(signal.SIGTERM)
+        assert sim.wait(timeout=20) == 0
