@@ -47,7 +47,9 @@ def replay_cmd(file: str, live: bool, speed: float, screenshot: str | None, do_c
         n = replay_live(file, speed, screenshot)
         click.echo(f"replayed {n} events" + (f"; screenshot {screenshot}" if screenshot else ""), err=True)
     if code:
-        raise click.exceptions.Exit(code)
+        # SystemExit, not click's Exit: with standalone_mode=False click 8.5 returns Exit's code from
+        # app.main() instead of raising it, and labrig.cli.main drops that return value (exit 0)
+        raise SystemExit(code)
 
 
 def register(app: click.Group) -> None:
