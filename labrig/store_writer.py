@@ -24,7 +24,7 @@ from labrig import __version__, store as st
 from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
-DEFAULT_CHUNK_ROWS = 32768  # when the plan does not know a stream's length
+DEFAULT_CHUNK_ROWS = 1024  # unknown length (load-cell streams: tens of rows a step); HDF5 allocates whole chunks
 STEP_DATASETS = ("status", "t_start", "t_end", "wall_start", "wall_end", "summary")
 
 
