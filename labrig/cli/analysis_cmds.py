@@ -17,9 +17,11 @@ def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
     return np.array([np.nan if r.get(key) is None else float(r[key]) for r in rows])
 
 
-def run_fit(path: str | Path) -> dict[str, Any]:
-    """Fit the seed-000 model to a session and store the result under /entry/analysis/fit_seed000."""
+def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead") -> dict[str, Any]:
+    """Fit the seed-000 model (and seed 001's where the data allows) to a session; store the results under
+    /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
     from labrig.fit.seed000 import fit_seed000
+    from labrig.fit.seed001 import fit_seed001
     from labrig.fit.session_data import load_session
     from labrig.store import SessionFile
 
@@ -28,6 +30,12 @@ def run_fit(path: str | Path) -> dict[str, Any]:
         raise BadInput(f"{path}: no finished records to fit")
     fit = fit_seed000(sd)
     out = jsonable(fit.to_json())
+    out["seed001"] = None
+    if seed001 != "off":
+        h = fit_seed001(sd, method=seed001_method, force=seed001 == "on")
+        out["seed001"] = jsonable(h)
+        if h is not None:
+            SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(out["seed001"])})
     rows = out["per_pressure"]
     SessionFile(path).write_analysis(
         "fit_seed000",
@@ -59,6 +67,10 @@ def _summary(out: dict[str, Any]) -> None:
         v, e = out.get(name), out.get(f"{name}_stderr")
         click.echo(f"{name} = " + ("-" if v is None else f"{v:.4g} ± {e:.2g}{unit}"))
     click.echo(f"optimum clamping pressure (largest measured step response): {out.get('optimum_pressure_kPa')} kPa")
+    h = out.get("seed001")
+    if h:
+        click.echo(f"seed 001 Hammerstein ({h['method']}, law {h['law']}): NRMSE current {h['nrmse_current']:.3g}, displacement {h['nrmse_displacement']:.3g}")
+        click.echo("  " + ", ".join(f"{k} = {v:.4g}" for k, v in h["params"].items() if v is not None))
     for n in out.get("notes", []):
         click.echo(f"note: {n}")
 
@@ -66,11 +78,15 @@ def _summary(out: dict[str, Any]) -> None:
 @click.command("fit")
 @click.argument("session", type=click.Path(dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object")
-def fit_cmd(session: str, as_json: bool) -> None:
-    """Fit the paper's model (seed 000) to SESSION; results go into /entry/analysis/fit_seed000."""
+@click.option("--seed001", type=click.Choice(["auto", "on", "off"]), default="auto", show_default=True,
+              help="seed 001's Hammerstein model: auto = when the session has an amplitude series or multisines")
+@click.option("--seed001-method", type=click.Choice(["nelder-mead", "ga", "nsga2"]), default="nelder-mead", show_default=True)
+def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str) -> None:
+    """Fit the paper's model (seed 000) to SESSION, and seed 001's where the data allows; results go into
+    /entry/analysis/."""
     if not Path(session).exists():
         raise BadInput(f"{session}: no such session file")
-    out = run_fit(session)
+    out = run_fit(session, seed001, seed001_method)
     if as_json:
         print_json(out)
     else:

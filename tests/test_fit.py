@@ -1,0 +1,96 @@
+"""The seed-000 fitter on simulated sessions whose truth is known, on thin data, and on imported data."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from labrig.cli.analysis_cmds import run_fit
+from labrig.physics import presets, transfer
+from labrig.physics.params import TABLE2_KT_BAR
+from labrig.session_run import RunRequest, execute
+from labrig.store import SessionFile
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.fixture(scope="module")
+def sweep(tmp_path_factory):
+    path = tmp_path_factory.mktemp("sweep") / "paper.h5"
+    assert execute(RunRequest("paper-sweep", path, seed=11)).exit_code == 0
+    return path, run_fit(path)
+
+
+def test_fit_json_contract(sweep):
+    _, out = sweep
+    for key in ("per_pressure", "optimum_pressure_kPa", "alpha", "gamma"):
+        assert key in out
+    for row in out["per_pressure"]:
+        for key in ("pressure_kPa", "R_cont_ohm", "f1_Hz", "Kt_bar", "peak_disp_m"):
+            assert key in row and row[key] is not None
+    json.dumps(out)  # plain JSON
+
+
+def test_sweep_recovers_table2_and_f1(sweep):
+    _, out = sweep
+    paper = presets.get("paper")
+    for row, kt in zip(out["per_pressure"], TABLE2_KT_BAR):
+        truth_f1 = transfer.modal_set(paper.specimen(row["pressure_kPa"])).f_Hz[0]
+        assert row["f1_Hz"] == pytest.approx(truth_f1, rel=0.01)
+        assert abs(row["Kt_bar"] - kt) < 4 * row["Kt_bar_stderr"] + 0.002 * kt
+    assert out["gamma"] == pytest.approx(0.14, rel=0.05)
+    assert out["alpha"] == pytest.approx(0.105, rel=0.05)
+
+
+def test_optimum_is_the_pressure_with_the_largest_measured_step(sweep):
+    _, out = sweep
+    peaks = {r["pressure_kPa"]: r["peak_disp_m"] for r in out["per_pressure"]}
+    assert out["optimum_pressure_kPa"] == max(peaks, key=peaks.get)
+
+
+def test_results_are_stored_in_the_session(sweep):
+    path, out = sweep
+    stored = SessionFile(path).read_analysis("fit_seed000")
+    assert json.loads(stored["result_json"])["per_pressure"][0]["Kt_bar"] == pytest.approx(out["per_pressure"][0]["Kt_bar"])
+    assert np.allclose(stored["pressure_kPa"], [612, 1837, 3062, 4287])
+
+
+def test_thin_data_gives_nulls_and_notes_not_a_crash(tmp_path):
+    path = tmp_path / "step.h5"
+    assert execute(RunRequest("step", path)).exit_code == 0
+    out = run_fit(path)
+    row = out["per_pressure"][0]
+    assert row["R_cont_ohm"] is None and row["Kt_bar"] is None and row["f1_Hz"] is None
+    assert row["peak_disp_m"] > 1e-3
+    assert out["alpha"] is None and out["optimum_pressure_kPa"] is None
+    notes = " ".join(out["notes"])
+    assert "no impedance spectrum" in notes and "no stepped-sine FRF" in notes and "fewer than two pressures" in notes
+    assert out["seed001"] is None  # a single step cannot tell a nonlinearity
+
+
+def test_imported_data_is_fitted_like_a_session(tmp_path):
+    out_h5 = tmp_path / "imported.h5"
+    r = subprocess.run([sys.executable, "-m", "labrig", "import", str(DATA / "import_example" / "manifest.toml"), "--out", str(out_h5)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    r = subprocess.run([sys.executable, "-m", "labrig", "fit", str(out_h5), "--json"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout)
+    rows = {row["pressure_kPa"]: row for row in out["per_pressure"]}
+    assert set(rows) == {612, 3062}
+    assert all(row["R_cont_ohm"] is not None and row["peak_disp_m"] > 0 for row in rows.values())
+    assert out["optimum_pressure_kPa"] in (612, 3062)
+    assert out["alpha"] is None  # one stepped sine cannot make an FRF: said, not guessed
+    assert any("FRF" in n for n in out["notes"])
+
+
+def test_amplitude_series_gets_the_hammerstein_fit(tmp_path):
+    path = tmp_path / "amp.h5"
+    assert execute(RunRequest("amplitude-series", path)).exit_code == 0
+    out = run_fit(path)
+    h = out["seed001"]
+    assert h is not None and h["nrmse_current"] < 0.05
+    assert abs(h["params"]["g3"]) < 1e-4  # the simulated strip is linear: no cubic conductance to find
+    assert SessionFile(path).read_analysis("fit_seed001")
