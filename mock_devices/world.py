@@ -77,6 +77,32 @@ class _Segment:
 
 
 @dataclass
+class RecordWindow:
+    """Everything simulated for the latest record: remembered history, the record, then a tail at rest.
+
+    Effects with memory (filters, delays, hysteresis) read it so they see the drive history, not only
+    the record; they may replace ``displacement``/``current`` so that effects later in the list build on
+    theirs. The record is ``[k0, k0 + n)``; sample j is at ``t0 + (j - k0) / fs``.
+    """
+
+    t0: float
+    fs: float
+    k0: int
+    n: int
+    u: np.ndarray  # volts the strip saw
+    displacement: np.ndarray  # m, linear model (then earlier effects)
+    current: np.ndarray  # A
+    specimen: Specimen
+
+    @property
+    def t(self) -> np.ndarray:
+        return self.t0 + (np.arange(self.u.size) - self.k0) / self.fs
+
+    def record(self, x: np.ndarray) -> np.ndarray:
+        return x[self.k0 : self.k0 + self.n]
+
+
+@dataclass
 class _Trace:
     """The latest computed response, kept for instruments that sample "now" (the laser)."""
 
@@ -115,6 +141,7 @@ class Bench:
         self._force_t0 = -1e9
         self._history: list[_Segment] = []
         self._trace = _Trace(0.0, 1.0)
+        self.window: RecordWindow | None = None  # the latest record with its history (for effects)
         self._lock = threading.RLock()
 
     # ---------------------------------------------------------------------------------- clamp
@@ -125,6 +152,11 @@ class Bench:
             self._force_from = self._true_force(now)
             self._force_target = float(target_N)
             self._force_t0 = now
+
+    @property
+    def clamp_set_at(self) -> float:
+        """Simulated time of the latest clamp setting (what a creeping clamp relaxes from)."""
+        return self._force_t0
 
     def _true_force(self, t: float) -> float:
         a = np.exp(-max(t - self._force_t0, 0.0) / self.clamp_tau_s)
@@ -179,6 +211,7 @@ class Bench:
             )
             self._history.append(_Segment(t0, fs, v.copy()))
             self._trace = _Trace(t0, fs, disp[k0:].copy())
+            self.window = RecordWindow(t0, fs, k0, n, u, disp, cur, sp)
             out = {"current_A": cur[k0 : k0 + n], "displacement_m": disp[k0 : k0 + n]}
             for e in self.effects:
                 out = e.outputs(out, t, v, self)
