@@ -53,14 +53,17 @@ class Ring:
             return self.buf[:, : self.size].copy()
         return np.concatenate((self.buf[:, self.head :], self.buf[:, : self.head]), axis=1)
 
-    def tail_since(self, cutoff: float) -> np.ndarray:
-        """A (width, k) copy of the newest rows whose first column is >= ``cutoff`` (column 0 ascending)."""
+    def rows_since(self, cutoff: float) -> int:
+        """How many of the newest rows have first column >= ``cutoff`` (column 0 ascending)."""
         if self.size < self.capacity:
             segs = [self.buf[0, : self.size]]
         else:
             segs = [self.buf[0, self.head :], self.buf[0, : self.head]]
-        k = sum(len(s) - int(np.searchsorted(s, cutoff)) for s in segs)
-        return self.tail(k)
+        return sum(len(s) - int(np.searchsorted(s, cutoff)) for s in segs)
+
+    def tail_since(self, cutoff: float) -> np.ndarray:
+        """A (width, k) copy of the newest rows whose first column is >= ``cutoff``."""
+        return self.tail(self.rows_since(cutoff))
 
     def tail(self, k: int) -> np.ndarray:
         """A (width, k) copy of the newest ``k`` rows, oldest first."""
@@ -100,6 +103,45 @@ def minmax_decimate(x: np.ndarray, y: np.ndarray, bins: int) -> tuple[np.ndarray
     return np.asarray(x, float)[idx], np.asarray(y, float)[idx]
 
 
+def envelope_decimate(t: np.ndarray, lo: np.ndarray, hi: np.ndarray, bins: int) -> tuple[np.ndarray, np.ndarray]:
+    """``minmax_decimate`` for data already reduced to (min, max) pairs: min of mins, max of maxes."""
+    n = len(t)
+    per = max(1, math.ceil(n / bins))
+    pad = (-n) % per
+    if pad:  # repeat the last row: it changes neither a min nor a max
+        t, lo, hi = (np.concatenate((a, np.repeat(a[-1:], pad))) for a in (t, lo, hi))
+    lo2, hi2 = lo.reshape(-1, per), hi.reshape(-1, per)
+    a, b = np.argmin(lo2, axis=1), np.argmax(hi2, axis=1)
+    tt = t.reshape(-1, per)
+    rows = np.arange(lo2.shape[0])
+    lo_first = a <= b
+    x = np.stack((tt[rows, np.where(lo_first, a, b)], tt[rows, np.where(lo_first, b, a)]), axis=1).ravel()
+    y = np.stack((np.where(lo_first, lo2[rows, a], hi2[rows, b]), np.where(lo_first, hi2[rows, b], lo2[rows, a])), axis=1).ravel()
+    return x, y
+
+
+class Envelope:
+    """Min/max of every ``group`` consecutive rows (t of the group's first row): what a long window draws."""
+
+    def __init__(self, capacity: int, channels: int, group: int):
+        self.group, self.ring = group, Ring(capacity, 1 + 2 * channels)
+        self._pending: list[np.ndarray] | None = None
+
+    def append(self, t: np.ndarray, chans: list[np.ndarray]) -> None:
+        cols = [np.asarray(t, float), *(np.asarray(c, float) for c in chans)]
+        if self._pending is not None:
+            cols = [np.concatenate((p, c)) for p, c in zip(self._pending, cols)]
+        m = (len(cols[0]) // self.group) * self.group
+        self._pending = [c[m:] for c in cols] if m < len(cols[0]) else None
+        if m == 0:
+            return
+        out = [cols[0][:m:self.group]]
+        for c in cols[1:]:
+            g = c[:m].reshape(-1, self.group)
+            out += [g.min(axis=1), g.max(axis=1)]
+        self.ring.append(out)
+
+
 @dataclass
 class FrfRecord:
     """A finished sine record waiting to be demodulated (in the GUI thread, not the runner's)."""
@@ -117,7 +159,8 @@ class FrfRecord:
 class Snapshot:
     """A consistent copy of what the window needs for one frame."""
 
-    daq: np.ndarray  # (4, n): t, v, i, d (rig seconds, SI)
+    daq: np.ndarray  # (4, n): t, v, i, d (rig seconds, SI); empty when ``envelope`` is given
+    envelope: np.ndarray | None  # (7, m): t, then min and max of v, i, d per group (long windows)
     force: np.ndarray  # (2, n): t, force
     eis: list[tuple[float | None, np.ndarray]]  # (pressure_kPa, (3, n) f, z_re, z_im) per spectrum
     frf: list[FrfRecord]  # records finished since the last snapshot
@@ -150,9 +193,11 @@ def planned_seconds(kind: str, metadata: dict[str, Any], streams: tuple) -> floa
 class LiveModel:
     """Runner subscriber that feeds the live window (thread-safe; never blocks for long)."""
 
-    def __init__(self, capacity: int = 1 << 20, force_capacity: int = 1 << 16):
+    def __init__(self, capacity: int = 1 << 20, force_capacity: int = 1 << 16, group: int = 64, raw_limit: int = 1 << 16):
         self._lock = threading.Lock()
         self.daq = Ring(capacity, 4)
+        self.env = Envelope(capacity // group, 3, group)
+        self.raw_limit = raw_limit  # windows with more rows than this are drawn from the envelope
         self.force = Ring(force_capacity, 2)
         self.steps: dict[int, _StepInfo] = {}
         self.eis: list[tuple[float | None, np.ndarray]] = []
@@ -202,6 +247,7 @@ class LiveModel:
         if ev.stream == "daq":
             t = np.asarray(d["t_s"], float)
             self.daq.append([t0 + t, d["v_V"], d["i_A"], d["disp_m"]])
+            self.env.append(t0 + t, [d["v_V"], d["i_A"], d["disp_m"]])
             if st is not None and st.kind in FRF_KINDS:
                 st.parts.append([t, np.asarray(d["v_V"]), np.asarray(d["i_A"]), np.asarray(d["disp_m"])])
             if len(t):
@@ -233,12 +279,17 @@ class LiveModel:
     def snapshot(self, window_s: float | None = None) -> Snapshot:
         """Copy what changed (the lock is held only for the copies)."""
         with self._lock:
+            env = None
             if window_s is None:
                 daq, force = self.daq.ordered(), self.force.ordered()
-            else:  # copy only the visible window, not the whole ring
-                daq = self.daq.tail_since(self.daq.last() - window_s)
+            else:  # copy only the visible window, not the whole ring; long windows come from the envelope
+                cut = self.daq.last() - window_s
+                if self.daq.rows_since(cut) > self.raw_limit:
+                    daq, env = np.empty((4, 0)), self.env.ring.tail_since(cut)
+                else:
+                    daq = self.daq.tail_since(cut)
                 force = self.force.tail_since(self.force.last() - window_s)
             frf, self._frf = self._frf, []
             eis = list(self.eis)
             status, version, finished = self.status_text(), self.version, self.exit is not None
-        return Snapshot(daq, force, eis, frf, status, version, finished)
+        return Snapshot(daq, env, force, eis, frf, status, version, finished)

@@ -16,7 +16,7 @@ import pyqtgraph as pg
 from pyqtgraph.Qt import QtCore, QtWidgets
 
 from labrig.estimate import sine_estimate
-from labrig.live.model import LiveModel, Snapshot, minmax_decimate
+from labrig.live.model import LiveModel, Snapshot, envelope_decimate, minmax_decimate
 from labrig.live.qtguard import top_up
 
 # (column index in the daq snapshot, title, unit label, scale from SI to the plotted unit, colour)
@@ -46,7 +46,7 @@ class LiveWindow(QtWidgets.QMainWindow):
     """Live plot of one run (or replay). ``on_stop`` is called by the Stop button (``runner.request_stop``)."""
 
     def __init__(self, model: LiveModel, on_stop: Callable[[], None] | None = None, *, title: str = "labrig live",
-                 window_s: float = 60.0, fps: float = 30.0, bins: int = 1000):
+                 window_s: float = 60.0, fps: float = 40.0, bins: int = 1000):
         super().__init__()
         self.model, self.on_stop, self.window_s, self.bins = model, on_stop, window_s, bins
         self.setWindowTitle(title)
@@ -84,7 +84,7 @@ class LiveWindow(QtWidgets.QMainWindow):
         rows = [*TRACES, (1, "clamp force", "N", 1.0, "#9467bd")]
         for r, (_, name, unit, _, colour) in enumerate(rows):
             p = g.addPlot(row=r, col=0, title=f"{name} ({unit})")
-            p.showGrid(x=True, y=True, alpha=0.3)
+            # no grid here: grid lines are repainted with the scrolling axes and cost ~3x a whole frame
             if r == len(rows) - 1:
                 p.setLabel("bottom", "rig time", units="s")
             if self.trace_plots:
@@ -101,7 +101,7 @@ class LiveWindow(QtWidgets.QMainWindow):
         self.frf_phase = g.addPlot(row=1, col=1, title="FRF phase (deg)")
         self.frf_phase.setLogMode(x=True, y=False)
         self.frf_phase.setXLink(self.frf_mag)
-        self.frf_phase.setLabel("bottom", "frequency", units="Hz")
+        self.frf_phase.setLabel("bottom", "frequency (Hz)")  # no units=: SI prefixes misread on log axes
         sym = dict(pen=pg.mkPen("#ff7f0e", width=PEN_W), symbol="o", symbolSize=7, symbolBrush="#ff7f0e")
         self.frf_mag_curve = self.frf_mag.plot(**sym)
         self.frf_phase_curve = self.frf_phase.plot(**sym)
@@ -112,11 +112,12 @@ class LiveWindow(QtWidgets.QMainWindow):
         self.nyquist.setAspectLocked(True)
         self.bode = g.addPlot(row=3, col=1, title="impedance, Bode |Z| (ohm) and phase (deg, right)")
         self.bode.setLogMode(x=True, y=True)
-        self.bode.setLabel("bottom", "frequency", units="Hz")
+        self.bode.setLabel("bottom", "frequency (Hz)")
         self.bode_phase_view = pg.ViewBox()
         self.bode.showAxis("right")
         self.bode.scene().addItem(self.bode_phase_view)
         self.bode.getAxis("right").linkToView(self.bode_phase_view)
+        self.bode.getAxis("right").setLogMode(False, False)  # the phase is linear, unlike |Z|
         self.bode_phase_view.setXLink(self.bode)
         self.bode.vb.sigResized.connect(lambda: self.bode_phase_view.setGeometry(self.bode.vb.sceneBoundingRect()))
         self.eis_curves: list[tuple[pg.PlotDataItem, pg.PlotDataItem, pg.PlotDataItem]] = []
@@ -151,12 +152,20 @@ class LiveWindow(QtWidgets.QMainWindow):
         return True
 
     def _traces(self, snap: Snapshot) -> None:
-        t = snap.daq[0]
-        for (col, _, _, scale, _), curve in zip(TRACES, self.trace_curves):
-            x, y = minmax_decimate(t, snap.daq[col], self.bins)
+        for k, ((col, _, _, scale, _), curve) in enumerate(zip(TRACES, self.trace_curves)):
+            if snap.envelope is not None:
+                e = snap.envelope
+                x, y = envelope_decimate(e[0], e[1 + 2 * k], e[2 + 2 * k], self.bins)
+            else:
+                x, y = minmax_decimate(snap.daq[0], snap.daq[col], self.bins)
             curve.setData(x, y * scale, connect=self._connect(x))
         x, y = minmax_decimate(snap.force[0], snap.force[1], self.bins)
         self.force_curve.setData(x, y)
+        # one time axis for all four (x-linked): span whatever the daq and the force windows hold
+        ts = [a[0] for a in (snap.daq, snap.force, snap.envelope) if a is not None and a.shape[1]]
+        if ts:
+            lo, hi = min(float(t[0]) for t in ts), max(float(t[-1]) for t in ts)
+            self.trace_plots[0].setXRange(lo, hi if hi > lo else lo + 1.0, padding=0.02)
 
     def _connect(self, x: np.ndarray) -> np.ndarray | str:
         """Do not draw a line across the pause between two records (a gap of > 0.5 s or 4 bins)."""
