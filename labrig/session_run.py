@@ -25,6 +25,7 @@ class RunRequest:
     time_scale: float = 1000.0
     live: bool = False
     quiet: bool = True
+    safety: dict[str, float] = field(default_factory=dict)
     extra_subscribers: list[Any] = field(default_factory=list)
 
 
@@ -44,7 +45,7 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
         if req.sim:
             from labrig.simulate import simulated_rig
 
-            rig, _ = stack.enter_context(simulated_rig(req.preset, req.seed, req.effects, req.time_scale))
+            rig, _ = stack.enter_context(simulated_rig(req.preset, req.seed, req.effects, req.time_scale, safety=req.safety or None))
         else:
             rig = open_rig(load_rig(req.rig_path))
             stack.callback(rig.close)

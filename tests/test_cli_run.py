@@ -126,3 +126,15 @@ def test_labrig_sim_serves_a_rig_that_labrig_run_accepts(tmp_path):
     finally:
         sim.send_signal(signal.SIGTERM)
         assert sim.wait(timeout=20) == 0
+
+
+def test_a_failed_run_exits_3_with_one_line(tmp_path):
+    """A safety trip on the simulated bench: exit code 3, the reason on stderr, the session says fail."""
+    rig_limits = tmp_path / "tight.toml"
+    rig_limits.write_text('protocol = "step"\n[step]\namplitude_V = 1.0\n')
+    out = tmp_path / "s.h5"
+    r = subprocess.run([*LABRIG, "run", str(rig_limits), "--sim", "--quiet", "--limit", "max_current_A=0.002", "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 3, (r.returncode, r.stderr)
+    assert "safety trip" in r.stderr
+    with SessionReader(out) as s:
+        assert s.exit_status == "fail" and s.stream(2, "daq").rows > 0

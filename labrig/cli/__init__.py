@@ -36,8 +36,8 @@ def main(argv: list[str] | None = None) -> int:
     """Entry point: one clear line on stderr for bad input (exit 2) and instrument faults (exit 3)."""
     _register()
     try:
-        app.main(args=argv, prog_name="labrig", standalone_mode=False)
-        return 0
+        rc = app.main(args=argv, prog_name="labrig", standalone_mode=False)
+        return rc if isinstance(rc, int) else 0  # click returns an Exit's code here instead of raising
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except click.UsageError as exc:

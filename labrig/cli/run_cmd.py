@@ -64,8 +64,9 @@ class _Interrupts:
 @click.option("--live", is_flag=True, help="show the live plot window")
 @click.option("--fit", "do_fit", is_flag=True, help="fit the model straight after the run")
 @click.option("--diagnose", "do_diagnose", is_flag=True, help="diagnose straight after the fit")
+@click.option("--limit", "limits", multiple=True, metavar="NAME=VALUE", help="simulated bench safety limit, e.g. max_current_A=0.05 (repeatable)")
 @click.option("-q", "--quiet", is_flag=True, help="no progress display")
-def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, quiet) -> None:
+def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, limits, quiet) -> None:
     """Run PROTOCOL (a bundled name such as paper-sweep, or a TOML file) and store every sample.
 
     With --resume FILE.h5, continue the protocol stored in that session from its first unfinished step."""
@@ -88,6 +89,15 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         raise BadInput(f"{resume_path}: no such session to resume")
     if not sim and scenario != "none":
         raise BadInput("--scenario needs --sim")
+    safety = {}
+    for item in limits:
+        name, _, value = item.partition("=")
+        try:
+            safety[name.strip()] = float(value)
+        except ValueError:
+            raise BadInput(f"--limit {item}: expected NAME=NUMBER, e.g. max_current_A=0.05") from None
+    if safety and not sim:
+        raise BadInput("--limit applies to --sim; a real rig's limits live in its rig file's [safety] table")
     req = RunRequest(
         protocol=protocol,
         path=path,
@@ -100,6 +110,7 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         time_scale=time_scale,
         live=live,
         quiet=quiet,
+        safety=safety,
     )
     result = execute(req, interrupts=_Interrupts)
     if result.exit_code == 0 and (do_fit or do_diagnose):
@@ -107,6 +118,7 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
 
         after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
     if result.exit_code != 0:
+        click.echo(f"labrig: run {result.exit_status}: {result.reason} (data so far kept in {path})", err=True)
         raise click.exceptions.Exit(result.exit_code)
 
 
