@@ -95,7 +95,7 @@ class Hysteresis(WindowEffect):
     """Rate-independent memory of the electromechanical coupling (Prandtl-Ishlinskii).
 
     delta = H(s) Gamma[V], Gamma[V] = (1 - h) V + h mean_i play_{r_i}[V], r_i evenly over (0, r_max]:
-    h 0.2-0.45, r_max 0.2-0.5 V. The current does not see it (the loop is in charge -> strain).
+    h 0.3-0.6, r_max 0.3-0.6 V. The current does not see it (the loop is in charge -> strain).
     """
 
     h: float
@@ -156,7 +156,7 @@ def _lowpass(x: np.ndarray, tau: float, fs: float) -> np.ndarray:
 
 @dataclass(repr=False)
 class BackRelaxation(WindowEffect):
-    """Slow opposing water flux: delta = H(s) (1 - K2/(tau2 s + 1)), K2 0.9-1.4, tau2 3-15 s.
+    """Slow opposing water flux: delta = H(s) (1 - K2/(tau2 s + 1)), K2 0.9-1.4, tau2 3-12 s.
 
     The slow flux follows the fast bending with lag tau2 and opposes it; K2 > 1 reverses a long step
     (Nafion-Na+). Equivalent to DESIGN's H (1 - K' tau2 s/(tau2 s + 1)) with K' = -K2/(1 - K2) times a

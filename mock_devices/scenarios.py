@@ -6,6 +6,7 @@ The truth stays in this process; it never reaches the session file or anything t
 
 from __future__ import annotations
 
+import zlib
 from typing import Callable
 
 import numpy as np
@@ -43,9 +44,9 @@ def _mains(rng: np.random.Generator) -> list[Effect]:
 
 SCENARIOS: dict[str, ScenarioFactory] = {
     "none": lambda rng: [],
-    "back_relaxation": lambda rng: [fx.BackRelaxation(float(rng.uniform(0.9, 1.4)), _log_uniform(rng, 3.0, 15.0))],
+    "back_relaxation": lambda rng: [fx.BackRelaxation(float(rng.uniform(0.9, 1.4)), _log_uniform(rng, 3.0, 12.0))],
     "faradaic_current": _faradaic,
-    "hysteresis": lambda rng: [fx.Hysteresis(float(rng.uniform(0.2, 0.45)), float(rng.uniform(0.2, 0.5)))],
+    "hysteresis": lambda rng: [fx.Hysteresis(float(rng.uniform(0.3, 0.6)), float(rng.uniform(0.3, 0.6)))],
     "time_delay": lambda rng: [fx.TimeDelay(_log_uniform(rng, 5e-3, 40e-3))],
     "sensor_offset": lambda rng: [fx.SensorOffset(float(rng.uniform(0.6, 0.9)))],
     "clamp_relaxation": lambda rng: [fx.ClampRelaxation(float(rng.uniform(0.05, 0.2)), _log_uniform(rng, 200.0, 1000.0))],
@@ -64,12 +65,14 @@ def effects_for(name: str, seed: int) -> list[Effect]:
     """The effects of scenario ``name`` (several may be joined with '+'), strengths drawn from ``seed``.
 
     Combined effects are put in physical order (strip, measurement geometry, sensor channel, pickup)
-    whatever order the names were given in; each part draws from its own stream, so adding a part
-    does not change the others' strengths.
+    whatever order the names were given in; each part draws from a stream keyed by its name, so
+    ``a+b`` holds exactly the ``a`` of scenario ``a`` and the ``b`` of scenario ``b``.
     """
     out: list[Effect] = []
-    for k, part in enumerate(name.split("+")):
+    parts = name.split("+")
+    for k, part in enumerate(parts):
         if part not in SCENARIOS:
             raise KeyError(f"unknown scenario {part!r} (known: {', '.join(names())})")
-        out += SCENARIOS[part](np.random.default_rng([seed, k, 1009]))
+        repeat = parts[:k].count(part)  # the same name twice gives two different draws
+        out += SCENARIOS[part](np.random.default_rng([seed, zlib.crc32(part.encode()), repeat, 1009]))
     return sorted(out, key=lambda e: getattr(e, "order", 0))
