@@ -194,16 +194,18 @@ class Dehydration(Effect):
 # ------------------------------------------------------------------------------ clamp and measurement
 @dataclass(repr=False)
 class ClampRelaxation(Effect):
-    """Nafion creeps under the clamp: once the motor holds position (5 clamp time constants after a
-    setting) the force decays as p0 (1 - r (1 - exp(-(t - t_hold)/tau))), r 5-20 %, tau 200-1000 s.
-    The bench's specimen follows the force (R_cont, K_t bar), so gain and f1 drift."""
+    """Nafion creeps under the clamp: the motor servoes the force for ``servo_s`` after a setting (long
+    enough for the runner's clamp check), then holds position and the force relaxes as
+    p0 (1 - r (1 - exp(-(t - t_hold)/tau))), r 5-20 %, tau 200-1000 s. The bench's specimen follows the
+    force (R_cont, K_t bar), so gain and f1 drift during the records that follow."""
 
     r: float
     tau: float
+    servo_s: float = 60.0
     name = "clamp_relaxation"
 
     def force(self, f: float, t: float, bench: Bench) -> float:
-        held = t - bench.clamp_set_at - 5.0 * bench.clamp_tau_s
+        held = t - bench.clamp_set_at - self.servo_s
         return f * (1.0 - self.r * -math.expm1(-max(held, 0.0) / self.tau))
 
 
