@@ -17,10 +17,11 @@ def app() -> None:
 
 
 def _register() -> None:
-    from labrig.cli import analysis_cmds, model, run_cmd
+    from labrig.cli import analysis_cmds, diagnose_cmd, model, run_cmd
 
     app.add_command(model.model)
     app.add_command(analysis_cmds.fit_cmd)
+    app.add_command(diagnose_cmd.diagnose_cmd)
     app.add_command(run_cmd.run_cmd)
     app.add_command(run_cmd.sim_cmd)
     try:

@@ -1,0 +1,242 @@
+"""The effect catalogue (DESIGN.md 5; the names are a contract): for each effect a model extension on top of
+the fitted seed-000 baseline, expressed on the diagnosis features so it can be fitted in milliseconds.
+
+Each extension maps parameters theta to predictions of every feature block (FRF of displacement and current,
+harmonic ratios, first step response, load-cell drift, line-frequency components). The baseline is theta = 0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from labrig.physics import timeresp, transfer
+from labrig.diagnose.features import Features, SineFeature, StepFeature, predict_step, specimen_for
+from labrig.physics.params import Specimen
+
+D_REF = 1e-3  # m: scale of the output nonlinearities
+
+
+@dataclass
+class Context:
+    """Baseline predictions for one group of records (a set of pressures), computed once."""
+
+    feats: Features
+    specimens: dict[float, Specimen]
+    sines: list[SineFeature]
+    steps: list[StepFeature]
+    lines: list
+    Hd: np.ndarray  # baseline FRF at each sine's frequency and pressure
+    Hi: np.ndarray
+    Hd3: np.ndarray  # baseline FRF at 3 f (for harmonics made before the linear stage)
+    step_d: list[np.ndarray]
+    step_i: list[np.ndarray]
+    force_nominal: np.ndarray  # N, per sine: the clamp target (from the pressure)
+    area: float
+    length: float
+
+
+@dataclass
+class Prediction:
+    Hd: np.ndarray
+    Hi: np.ndarray
+    hd: np.ndarray  # (n, 2): predicted displacement harmonic ratios k = 2, 3
+    hi: np.ndarray
+    step_d: list[np.ndarray]
+    step_i: list[np.ndarray]
+    drift: float  # predicted relative force drift rate (1/s)
+    line: dict[tuple[str, float], float]  # predicted line amplitude per (channel, Hz); absent = none (noise only)
+
+
+def baseline(ctx: Context) -> Prediction:
+    n = len(ctx.sines)
+    return Prediction(ctx.Hd.copy(), ctx.Hi.copy(), np.zeros((n, 2), complex), np.zeros((n, 2), complex),
+                      [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], 0.0, {})
+
+
+@dataclass
+class Extension:
+    name: str
+    params: tuple[str, ...]
+    x0: tuple[float, ...]
+    lo: tuple[float, ...]
+    hi: tuple[float, ...]
+    apply: Callable[[np.ndarray, Context], Prediction]
+    describe: str = ""
+    units: dict = field(default_factory=dict)
+
+
+def _drive(s: SineFeature) -> complex:
+    return complex(s.est.drive[0])
+
+
+# ------------------------------------------------------------------------------------------------ effects
+
+
+def _back_relaxation(th, ctx):
+    k2, tau = th
+    p = baseline(ctx)
+    if k2 == 0:
+        return p
+    B = lambda s: 1.0 - k2 * tau * s / (tau * s + 1.0)  # noqa: E731
+    f = np.array([s.f for s in ctx.sines])
+    p.Hd = p.Hd * B(2j * np.pi * f)
+    for k, st in enumerate(ctx.steps):
+        fs = 1.0 / np.median(np.diff(st.t))
+        p.step_d[k] = timeresp.simulate(B, p.step_d[k], fs)
+    return p
+
+
+def _faradaic(th, ctx):
+    g1, g3 = th
+    p = baseline(ctx)
+    for k, s in enumerate(ctx.sines):
+        a = _drive(s)
+        i1 = p.Hi[k] * a + g1 * a + 0.75 * g3 * abs(a) ** 2 * a
+        p.hi[k, 1] = 0.25 * g3 * a**3 / i1
+        p.Hi[k] = i1 / a
+    for k, st in enumerate(ctx.steps):
+        p.step_i[k] = p.step_i[k] + g1 * st.v + g3 * st.v**3
+    return p
+
+
+def _play(x: np.ndarray, r: float) -> np.ndarray:
+    """Play (backlash) operator of half-width r, starting at 0."""
+    y = np.empty_like(x)
+    prev = 0.0
+    for k, v in enumerate(x):
+        prev = min(max(prev, v - r), v + r)
+        y[k] = prev
+    return y
+
+
+def _play_df(a: float, r: float) -> tuple[complex, complex]:
+    """Describing function of the play operator at amplitude a: fundamental and 3rd harmonic gains."""
+    th = np.linspace(0, 2 * np.pi, 257)[:-1]
+    x = a * np.cos(th)
+    y = _play(np.tile(x, 2), r)[th.size :]  # second cycle: periodic state
+    c = np.fft.rfft(y) / th.size * 2
+    return complex(c[1] / a), complex(c[3] / a)
+
+
+def _hysteresis(th, ctx):
+    w, r = th
+    p = baseline(ctx)
+    if w == 0:
+        return p
+    for k, s in enumerate(ctx.sines):
+        a = abs(_drive(s))
+        n1, n3 = _play_df(a, min(r, 0.99 * a))
+        g1 = (1 - w) + w * n1
+        p.Hd[k] = p.Hd[k] * g1
+        p.hd[k, 1] = w * n3 * ctx.Hd3[k] / (g1 * ctx.Hd[k]) * (_drive(s) / a) ** 2
+    for k, st in enumerate(ctx.steps):
+        sp = specimen_for(ctx.specimens, st.pressure_kPa)
+        veff = (1 - w) * st.v_full + w * _play(st.v_full, r)
+        p.step_d[k] = predict_step(sp, st, veff)[0]
+    return p
+
+
+def _time_delay(th, ctx):
+    (tau,) = th
+    p = baseline(ctx)
+    f = np.array([s.f for s in ctx.sines])
+    p.Hd = p.Hd * np.exp(-2j * np.pi * f * tau)
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k] = np.interp(st.t - tau, st.t, p.step_d[k], left=0.0)
+    return p
+
+
+def _sensor_offset(th, ctx):
+    (xi,) = th
+    p = baseline(ctx)
+    if xi >= 1.0:
+        return p
+    for k, s in enumerate(ctx.sines):
+        sp = specimen_for(ctx.specimens, s.pressure_kPa)
+        p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(sensor_x=xi * ctx.length))[0]
+    for k, st in enumerate(ctx.steps):
+        sp = specimen_for(ctx.specimens, st.pressure_kPa).with_(sensor_x=xi * ctx.length)
+        p.step_d[k] = predict_step(sp, st)[0]
+    return p
+
+
+def _clamp_relaxation(th, ctx):
+    rate, b_kt, b_gain = th
+    p = baseline(ctx)
+    p.drift = -rate
+    for k, s in enumerate(ctx.sines):
+        if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
+            continue
+        rel = s.force_mean / ctx.force_nominal[k]
+        sp = specimen_for(ctx.specimens, s.pressure_kPa)
+        sp2 = sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt)
+        p.Hd[k] = transfer.frf(np.array([s.f]), sp2)[0] * rel**b_gain
+    return p
+
+
+def _dehydration(th, ctx):
+    rate_d, rate_i = th
+    p = baseline(ctx)
+    t0 = ctx.feats.t0
+    for k, s in enumerate(ctx.sines):
+        dt = max(s.t_start - t0, 0.0)
+        p.Hd[k] *= np.exp(-rate_d * dt)
+        p.Hi[k] *= np.exp(-rate_i * dt)
+    for k, st in enumerate(ctx.steps):
+        dt = max(st.t_start - t0, 0.0)
+        p.step_d[k] = p.step_d[k] * np.exp(-rate_d * dt)
+        p.step_i[k] = p.step_i[k] * np.exp(-rate_i * dt)
+    return p
+
+
+def _strain_resistance(th, ctx):
+    c2, c2i = th
+    p = baseline(ctx)
+    for k, s in enumerate(ctx.sines):
+        a1 = p.Hd[k] * _drive(s)
+        p.hd[k, 0] = c2 / (2 * D_REF) * a1
+        p.hi[k, 0] = c2i / (2 * D_REF) * a1
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k] = p.step_d[k] + c2 * p.step_d[k] ** 2 / D_REF
+    return p
+
+
+def _large_deflection(th, ctx):
+    (c3,) = th
+    p = baseline(ctx)
+    L2 = ctx.length**2
+    for k, s in enumerate(ctx.sines):
+        a1 = p.Hd[k] * _drive(s)
+        g = 1 - 0.75 * c3 * abs(a1) ** 2 / L2
+        p.hd[k, 1] = -(c3 / (4 * L2)) * a1**2 / g
+        p.Hd[k] *= g
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k] = p.step_d[k] - c3 * p.step_d[k] ** 3 / L2
+    return p
+
+
+def _mains(th, ctx):
+    d50, i50, d60, i60 = th
+    p = baseline(ctx)
+    p.line = {("d", 50.0): d50 * 1e-6, ("i", 50.0): i50 * 1e-6, ("d", 60.0): d60 * 1e-6, ("i", 60.0): i60 * 1e-6}
+    return p
+
+
+CATALOGUE: dict[str, Extension] = {
+    e.name: e
+    for e in (
+        Extension("back_relaxation", ("K2", "tau2_s"), (0.3, 10.0), (0.0, 0.2), (1.5, 300.0), _back_relaxation, "H(s)(1 - K2 tau2 s/(tau2 s + 1))"),
+        Extension("faradaic_current", ("g1_S", "g3_S_per_V2"), (0.0, 0.0), (-0.05, -0.05), (0.05, 0.05), _faradaic, "parallel odd-polynomial conductance i = g1 v + g3 v^3"),
+        Extension("hysteresis", ("weight", "play_V"), (0.2, 0.05), (0.0, 1e-3), (1.0, 1.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive"),
+        Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel"),
+        Extension("sensor_offset", ("x_over_L",), (0.9,), (0.3,), (1.0,), _sensor_offset, "laser spot at x_m < L: read w(x_m)"),
+        Extension("clamp_relaxation", ("creep_per_s", "kt_exponent", "gain_exponent"), (0.0, 1.0, 0.0), (-1e-2, -10.0, -10.0), (1e-2, 10.0, 10.0), _clamp_relaxation, "force creep; K_t bar and gain follow the measured force"),
+        Extension("dehydration", ("gain_decay_per_s", "conductance_decay_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-2, 1e-2), _dehydration, "gain and conductance decay with time"),
+        Extension("strain_resistance", ("c2", "c2_current"), (0.0, 0.0), (-5.0, -5.0), (5.0, 5.0), _strain_resistance, "quadratic (even) output term from curvature-dependent electrode resistance"),
+        Extension("large_deflection", ("c3",), (0.0,), (-50.0,), (500.0,), _large_deflection, "projection of the arc: delta - c3 delta^3 / L^2"),
+        Extension("mains_pickup", ("disp50_um", "cur50_uA", "disp60_um", "cur60_uA"), (1.0, 1.0, 1.0, 1.0), (0.0,) * 4, (1e4,) * 4, _mains, "additive 50/60 Hz line of constant amplitude"),
+    )
+}

@@ -1,0 +1,202 @@
+"""Diagnosis: where the fitted baseline disagrees with the data, which catalogued effect explains it, and the
+gain on held-out records.
+
+Records are split by clamping pressure (alternate pressures; with one pressure, alternate records): each
+extension is fitted on one half and scored on the other, never on samples of one time series. Evidence is
+the chi-square form of the BIC on the fitted half (residuals in units of their noise), DeltaBIC =
+chi2_ext - chi2_base + k ln n; the gain is the held-out NRMSE ratio.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from labrig.diagnose.catalogue import CATALOGUE, Context, Prediction, baseline
+from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for
+from labrig.fit.session_data import SessionData
+
+FRF_FLOOR = 0.01  # relative model error the baseline is allowed on an FRF point
+HARM_FLOOR = 2e-3
+STEP_FLOOR = 0.01
+STEP_EFFECTIVE_POINTS = 50  # a step's residual samples are correlated: count them as this many
+LINE_SIGMA = 0.6
+DBIC_EFFECT = -25.0  # evidence needed to name an effect
+RATIO_EFFECT = 0.8  # and the held-out error must fall at least this much
+CHI2_STRUCTURED = 4.0  # baseline chi2/dof above this with no explaining effect: "unexplained"
+
+
+def build_context(feats: Features, specimens: dict, group: set) -> Context:
+    sines = [s for s in feats.sines if s.pressure_kPa in group]
+    steps = [s for s in feats.steps if s.pressure_kPa in group]
+    lines = [line for line in feats.lines if line.pressure_kPa in group]
+    Hd, Hi, Hd3 = np.zeros(len(sines), complex), np.zeros(len(sines), complex), np.zeros(len(sines), complex)
+    for p in {s.pressure_kPa for s in sines}:
+        idx = [k for k, s in enumerate(sines) if s.pressure_kPa == p]
+        sp = specimen_for(specimens, p)
+        d, i = predict_sines(sp, [sines[k] for k in idx])
+        d3, _ = predict_sines(sp, [type(sines[k])(**{**sines[k].__dict__, "f": 3 * sines[k].f}) for k in idx])
+        Hd[idx], Hi[idx], Hd3[idx] = d, i, d3
+    sd, si = [], []
+    for st in steps:
+        d, i = predict_step(specimen_for(specimens, st.pressure_kPa), st)
+        sd.append(d)
+        si.append(i)
+    any_sp = next(iter(specimens.values()))
+    area = any_sp.geometry.clamp_area
+    nominal = np.array([(s.pressure_kPa or 0.0) * 1e3 * area for s in sines])
+    return Context(feats, specimens, sines, steps, lines, Hd, Hi, Hd3, sd, si, nominal, area, any_sp.geometry.length)
+
+
+def _drift_meas(ctx: Context) -> np.ndarray:
+    return np.array([s.force_slope / n if n > 0 else 0.0 for s, n in zip(ctx.sines, ctx.force_nominal)])
+
+
+def blocks(pred: Prediction, ctx: Context, drift_sigma: float) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Per block: (residuals in noise units, relative residuals)."""
+    out: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    if ctx.sines:
+        Hd_m = np.array([s.Hd for s in ctx.sines])
+        Hi_m = np.array([s.Hi for s in ctx.sines])
+        sd = np.array([s.est.disp_noise for s in ctx.sines])
+        si = np.array([s.est.cur_noise for s in ctx.sines])
+        for key, pr, me, sg in (("frf_d", pred.Hd, Hd_m, sd), ("frf_i", pred.Hi, Hi_m, si)):
+            sig = np.sqrt(np.nan_to_num(sg, nan=0.0) ** 2 + (FRF_FLOOR * np.abs(me)) ** 2)
+            r = pr - me
+            out[key] = (np.r_[r.real / sig, r.imag / sig], np.r_[r.real, r.imag] / np.r_[np.abs(me), np.abs(me)])
+        for key, which, pr in (("harm_d", "d", pred.hd), ("harm_i", "i", pred.hi)):
+            me = np.array([[s.harm(which, 2), s.harm(which, 3)] for s in ctx.sines])
+            rel_noise = (sd / np.abs(Hd_m)) if which == "d" else (si / np.abs(Hi_m))
+            sig = np.sqrt(np.nan_to_num(rel_noise, nan=0.0)[:, None] ** 2 + HARM_FLOOR**2)
+            r = (pr - me).ravel()
+            sig = np.repeat(sig, 2, axis=1).ravel()
+            out[key] = (np.r_[r.real / sig, r.imag / sig], np.r_[r.real, r.imag] * 10)
+        dm = _drift_meas(ctx)
+        sig = np.array([max(s.force_slope_sigma / n, 1e-7) if n > 0 else 1.0 for s, n in zip(ctx.sines, ctx.force_nominal)])
+        r = np.full(dm.size, pred.drift) - dm
+        out["drift"] = (r / sig, np.zeros(0))  # evidence only: not a signal error
+    for k, st in enumerate(ctx.steps):
+        w = math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))
+        for key, pr, me, nz in (("step_d", pred.step_d[k], st.d, st.noise_d), ("step_i", pred.step_i[k], st.i, st.noise_i)):
+            rms = float(np.sqrt(np.mean(me**2))) or 1.0
+            sig = math.sqrt(nz**2 + (STEP_FLOOR * rms) ** 2)
+            r = pr - me
+            prev = out.get(key, (np.zeros(0), np.zeros(0)))
+            out[key] = (np.r_[prev[0], r / sig / w], np.r_[prev[1], r / rms / w * 3])
+    if ctx.lines:
+        ev, rel = [], []
+        for line in ctx.lines:
+            for key, a in line.amp.items():
+                fl = line.floor[key]
+                if not np.isfinite(fl) or fl <= 0:
+                    continue
+                pred_a = math.hypot(pred.line.get(key, 0.0), 1.25 * fl)  # noise alone reads ~1.25 x the median floor
+                ev.append((pred_a - a) / fl)
+                rel.append((pred_a - a) / line.rms[key[0]] * 10)
+        out["line"] = (np.array(ev), np.array(rel))
+    return out
+
+
+def chi2(bl: dict) -> tuple[float, int]:
+    n = sum(v[0].size for v in bl.values())
+    return float(sum(np.sum(v[0] ** 2) for v in bl.values())), n
+
+
+def nrmse(bl: dict) -> float:
+    """RMS over blocks of each block's RMS relative error."""
+    per = [float(np.sqrt(np.mean(v[1] ** 2))) for v in bl.values() if v[1].size]
+    return float(np.sqrt(np.mean(np.square(per)))) if per else float("nan")
+
+
+@dataclass
+class Candidate:
+    name: str
+    params: dict[str, float]
+    delta_bic: float
+    heldout_nrmse: float
+    heldout_ratio: float
+    chi2_fit: float
+
+
+def _fit_extension(name: str, ctx: Context, drift_sigma: float, base_chi2: float) -> tuple[np.ndarray, float]:
+    ext = CATALOGUE[name]
+
+    def res(th: np.ndarray) -> np.ndarray:
+        bl = blocks(ext.apply(th, ctx), ctx, drift_sigma)
+        return np.concatenate([v[0] for v in bl.values()])
+
+    best_x, best = np.array(ext.x0, float), np.inf
+    starts = [np.array(ext.x0, float)]
+    if name == "back_relaxation":
+        starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0])]
+    if name == "time_delay":
+        starts += [np.array([0.02]), np.array([-0.02])]
+    for x0 in starts:
+        try:
+            r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale="jac", max_nfev=60)
+        except (ValueError, FloatingPointError):
+            continue
+        c = float(np.sum(r.fun**2))
+        if np.isfinite(c) and c < best:
+            best_x, best = r.x, c
+    return best_x, best
+
+
+def split(feats: Features) -> tuple[set, set]:
+    ps = feats.pressures()
+    if len(ps) >= 2:
+        return set(ps[0::2]), set(ps[1::2])
+    return {None, *ps}, {None, *ps}
+
+
+def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
+    t0 = time.perf_counter()
+    feats = extract(sd)
+    fit_set, held_set = split(feats)
+    same = fit_set == held_set
+    ctx_fit = build_context(feats, specimens, fit_set)
+    ctx_held = ctx_fit if same else build_context(feats, specimens, held_set)
+    drift_sigma = 0.0  # per-record uncertainties are in the features
+    b_fit = blocks(baseline(ctx_fit), ctx_fit, drift_sigma)
+    b_held = blocks(baseline(ctx_held), ctx_held, drift_sigma)
+    c0, n = chi2(b_fit)
+    base_heldout = nrmse(b_held)
+    cands: list[Candidate] = []
+    for name, ext in CATALOGUE.items():
+        th, c = _fit_extension(name, ctx_fit, drift_sigma, c0)
+        dbic = c - c0 + len(th) * math.log(max(n, 2))
+        h = nrmse(blocks(ext.apply(th, ctx_held), ctx_held, drift_sigma))
+        cands.append(Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, h / base_heldout if base_heldout > 0 else float("nan"), c))
+    cands.sort(key=lambda c: c.delta_bic)
+    c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
+    dof_chi2 = c_all / max(n_all, 1)
+    named = [c for c in cands if c.delta_bic < DBIC_EFFECT and c.heldout_ratio < RATIO_EFFECT]
+    if named:
+        verdict, cause = "effect", named[0].name
+        gap = (named[1].delta_bic - named[0].delta_bic) if len(named) > 1 else -named[0].delta_bic
+        confidence = float(1.0 - math.exp(-max(gap, 0.0) / 20.0))
+    elif dof_chi2 > CHI2_STRUCTURED:
+        verdict, cause, confidence = "unexplained", None, float(1.0 - 1.0 / dof_chi2)
+    else:
+        verdict, cause, confidence = "none", None, float(min(1.0, 1.0 / max(dof_chi2, 1e-9)) if dof_chi2 > 1 else 1.0)
+    best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
+    return {
+        "verdict": verdict,
+        "cause": cause,
+        "confidence": confidence,
+        "effects": [c.name for c in named],
+        "candidates": [
+            {"name": c.name, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
+            for c in cands
+        ],
+        "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": {k: float(np.sqrt(np.mean(v[1] ** 2))) for k, v in b_held.items() if v[1].size}},
+        "extended": {"name": best.name, "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+        "gain": {"heldout_nrmse_ratio": best.heldout_ratio, "delta_bic": best.delta_bic},
+        "split": {"fit": sorted(p for p in fit_set if p is not None), "heldout": sorted(p for p in held_set if p is not None), "same_records": same},
+        "elapsed_s": time.perf_counter() - t0,
+    }

@@ -1,0 +1,192 @@
+"""What the diagnosis compares: measured features of a session and the baseline model's predictions.
+
+Features are chosen to be robust to the strip's unknown history at the start of each record (records are
+not time-stamped to the sample on the rig clock): FRF points and harmonic ratios from sine records
+(demodulated with a trend), the first step of each pressure (taken after rest), the load cell's drift
+during records, and narrow line-frequency components.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from labrig.estimate import SineEstimate, sine_estimate
+from labrig.fit.session_data import SessionData, TimeRecord
+from labrig.physics import timeresp, transfer
+from labrig.physics.params import Specimen
+
+STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of interest are slow)
+LINE_HZ = (50.0, 60.0)
+
+
+@dataclass
+class SineFeature:
+    """One sine record (stepped sine, harmonic, amplitude series)."""
+
+    name: str
+    pressure_kPa: float | None
+    t_start: float
+    f: float
+    amplitude_V: float
+    est: SineEstimate
+    force_slope: float = 0.0  # N/s during the record
+    force_mean: float = float("nan")
+    force_slope_sigma: float = float("nan")  # N/s: from the readings' scatter and the indicator's resolution
+
+    @property
+    def Hd(self) -> complex:
+        return self.est.H_disp
+
+    @property
+    def Hi(self) -> complex:
+        return self.est.H_cur
+
+    def harm(self, which: str, k: int) -> complex:
+        """Harmonic k relative to the fundamental of the same signal."""
+        a = self.est.displacement if which == "d" else self.est.current
+        return complex(a[k - 1] / a[0])
+
+
+@dataclass
+class StepFeature:
+    name: str
+    pressure_kPa: float | None
+    t_start: float
+    t: np.ndarray  # decimated (block means of q samples)
+    v: np.ndarray
+    d: np.ndarray
+    i: np.ndarray
+    noise_d: float
+    noise_i: float
+    amplitude_V: float
+    v_full: np.ndarray = field(default_factory=lambda: np.zeros(0))  # the drive at the record's own rate
+    fs_full: float = 0.0
+    q: int = 1
+
+    def decimate(self, x: np.ndarray) -> np.ndarray:
+        n = self.t.size * self.q
+        return x[:n].reshape(-1, self.q).mean(axis=1)
+
+
+@dataclass
+class LineFeature:
+    """Amplitude of the 50/60 Hz components in a record's displacement and current, with the local noise floor."""
+
+    name: str
+    pressure_kPa: float | None
+    amp: dict[tuple[str, float], float]  # (channel "d"/"i", line Hz) -> amplitude (m or A)
+    floor: dict[tuple[str, float], float]  # the same for the neighbouring bins (noise)
+    rms: dict[str, float]  # detrended signal rms per channel
+
+
+@dataclass
+class Features:
+    sines: list[SineFeature] = field(default_factory=list)
+    steps: list[StepFeature] = field(default_factory=list)
+    lines: list[LineFeature] = field(default_factory=list)
+    t0: float = 0.0  # earliest record start (s, rig clock)
+
+    def pressures(self) -> list[float]:
+        ps = {s.pressure_kPa for s in self.sines} | {s.pressure_kPa for s in self.steps}
+        return sorted(p for p in ps if p is not None)
+
+
+def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
+    """(slope N/s, mean N, slope uncertainty N/s): the indicator's counts make its noise at least q/sqrt(12)."""
+    f = r.force_N
+    if f.size < 4:
+        return 0.0, float(np.mean(f)) if f.size else float("nan"), float("inf")
+    dur = max(r.t[-1] - r.t[0], 1e-9)
+    x = np.linspace(0, dur, f.size)
+    coef, res, *_ = np.polyfit(x, f, 1, full=True)
+    steps = np.abs(np.diff(f))
+    q = float(np.min(steps[steps > 0])) if np.any(steps > 0) else 0.0
+    white = math.sqrt(max(float(res[0]) if res.size else 0.0, 0.0) / max(f.size - 2, 1))
+    sigma_w = max(white, q / math.sqrt(12.0), 1e-6)
+    return float(coef[0]), float(np.mean(f)), sigma_w * math.sqrt(12.0 / f.size) / dur
+
+
+def _line(t: np.ndarray, x: np.ndarray, fs: float, f_line: float) -> tuple[float, float]:
+    """(amplitude at f_line, median amplitude of the neighbouring bins), amplitude-calibrated Hann spectrum."""
+    if f_line * 2.2 > fs or t.size < 256:
+        return 0.0, float("inf")
+    n = t.size
+    w = np.hanning(n)
+    spec = np.abs(np.fft.rfft((x - np.polyval(np.polyfit(t, x, 3), t)) * w)) * 2 / w.sum()
+    freqs = np.fft.rfftfreq(n, 1.0 / fs)
+    k = int(np.argmin(np.abs(freqs - f_line)))
+    lo, hi = max(k - 40, 1), min(k + 40, spec.size)
+    near = np.r_[spec[lo : max(k - 3, lo)], spec[min(k + 4, hi) : hi]]
+    return float(spec[max(k - 1, 0) : k + 2].max()), float(np.median(near)) if near.size else float("inf")
+
+
+def _decimate(r: TimeRecord, rate: float) -> tuple[int, tuple[np.ndarray, ...]]:
+    q = max(1, int(round(r.fs / rate)))
+    n = (r.t.size // q) * q
+    return q, tuple(a[:n].reshape(-1, q).mean(axis=1) for a in (r.t, r.v, r.d, r.i))
+
+
+def extract(sd: SessionData) -> Features:
+    feats = Features()
+    records = sd.all_records()
+    starts = [r.t_start for r in records if np.isfinite(r.t_start)]
+    feats.t0 = min(starts) if starts else 0.0
+    first_step: set[float | None] = set()
+    for r in records:
+        p = r.meta.get("pressure_kPa")
+        p = float(p) if p is not None else None
+        slope, fmean, slope_sigma = _force_slope(r)
+        if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta:
+            f = float(r.meta["frequency_Hz"])
+            est = sine_estimate(r.t, r.v, r.i, r.d, f, float(r.meta.get("settle_cycles", 0.0) or 0.0), float(r.meta.get("cycles", 0) or 0) or None)
+            amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
+            feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma))
+        elif r.kind == "step" and p not in first_step:
+            first_step.add(p)
+            q, (t, v, d, i) = _decimate(r, STEP_RATE_HZ)
+            t_on = float(r.meta.get("pre_s", 0.0))
+            pre = r.t < t_on
+            nd = float(np.std(r.d[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
+            ni = float(np.std(r.i[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
+            feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
+        amp, floor = {}, {}
+        for ch, x in (("d", r.d), ("i", r.i)):
+            for f in LINE_HZ:
+                amp[(ch, f)], floor[(ch, f)] = _line(r.t, x, r.fs, f)
+        rms = {ch: float(np.std(x)) or 1.0 for ch, x in (("d", r.d), ("i", r.i))}
+        feats.lines.append(LineFeature(r.name, p, amp, floor, rms))
+    return feats
+
+
+# ------------------------------------------------------------------------------------ baseline
+
+
+def predict_step(sp: Specimen, st: StepFeature, drive: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The baseline's step response from rest to the recorded drive: simulated at the record's own rate, then
+    block-averaged exactly as the measurement was (a decimated drive would smear the current's spike)."""
+    v = st.v_full if drive is None else drive
+    d, i = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], v, st.fs_full)
+    return st.decimate(d), st.decimate(i)
+
+
+def predict_sines(sp: Specimen, sines: list[SineFeature]) -> tuple[np.ndarray, np.ndarray]:
+    f = np.array([s.f for s in sines])
+    return transfer.frf(f, sp), transfer.admittance_tf(2j * np.pi * f, sp)
+
+
+def specimen_for(specimens: dict[float, Specimen], p: float | None) -> Specimen:
+    if p is not None and p in specimens:
+        return specimens[p]
+    # the nearest fitted pressure (records without a pressure use the first)
+    keys = sorted(specimens)
+    if p is None:
+        return specimens[keys[0]]
+    return specimens[min(keys, key=lambda k: abs(k - p))]
+
+
+def by_pressure(items: list, pressures: set[float | None]) -> list:
+    return [x for x in items if x.pressure_kPa in pressures]
+
