@@ -80,7 +80,9 @@ def _back_relaxation(th, ctx):
     p = baseline(ctx)
     if k2 == 0:
         return p
-    B = lambda s: 1.0 - k2 * tau * s / (tau * s + 1.0)  # noqa: E731
+    # DESIGN.md 5 prints 1 - K2 tau s/(tau s + 1), which removes gain *above* 1/tau and never makes a step
+    # peak and relax; the slow opposing flux is a low-pass: the step rises, peaks, then decays or reverses
+    B = lambda s: 1.0 - k2 / (tau * s + 1.0)  # noqa: E731
     f = np.array([s.f for s in ctx.sines])
     p.Hd = p.Hd * B(2j * np.pi * f)
     for k, st in enumerate(ctx.steps):
@@ -228,7 +230,7 @@ def _mains(th, ctx):
 CATALOGUE: dict[str, Extension] = {
     e.name: e
     for e in (
-        Extension("back_relaxation", ("K2", "tau2_s"), (0.3, 10.0), (0.0, 0.2), (1.5, 300.0), _back_relaxation, "H(s)(1 - K2 tau2 s/(tau2 s + 1))"),
+        Extension("back_relaxation", ("K2", "tau2_s"), (0.5, 10.0), (-0.5, 0.2), (2.5, 300.0), _back_relaxation, "H(s)(1 - K2/(tau2 s + 1)): a slow opposing flux"),
         Extension("faradaic_current", ("g1_S", "g3_S_per_V2"), (0.0, 0.0), (-0.05, -0.05), (0.05, 0.05), _faradaic, "parallel odd-polynomial conductance i = g1 v + g3 v^3"),
         Extension("hysteresis", ("weight", "play_V"), (0.2, 0.05), (0.0, 1e-3), (1.0, 1.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive"),
         Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel"),
