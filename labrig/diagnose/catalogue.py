@@ -2,7 +2,7 @@
 the fitted seed-000 baseline, expressed on the diagnosis features so it can be fitted in milliseconds.
 
 Each extension maps parameters theta to predictions of every feature block (FRF of displacement and current,
-harmonic ratios, first step response, load-cell drift, line-frequency components). The baseline is theta = 0.
+harmonic ratios, first step response, clamp force against its target, line-frequency components). The baseline is theta = 0.
 """
 
 from __future__ import annotations
@@ -46,14 +46,14 @@ class Prediction:
     hi: np.ndarray
     step_d: list[np.ndarray]
     step_i: list[np.ndarray]
-    drift: float  # predicted relative force drift rate (1/s)
+    force_rel: np.ndarray  # predicted mean clamp force of each sine record relative to its target, minus 1
     line: dict[tuple[str, float], float]  # predicted line amplitude per (channel, Hz); absent = none (noise only)
 
 
 def baseline(ctx: Context) -> Prediction:
     n = len(ctx.sines)
     return Prediction(ctx.Hd.copy(), ctx.Hi.copy(), np.zeros((n, 2), complex), np.zeros((n, 2), complex),
-                      [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], 0.0, {})
+                      [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], np.zeros(n), {})
 
 
 @dataclass
@@ -152,30 +152,31 @@ def _time_delay(th, ctx):
 
 
 def _sensor_offset(th, ctx):
-    (xi,) = th
+    xi, gain = th
     p = baseline(ctx)
-    if xi >= 1.0:
-        return p
+    # the baseline fit already scaled alpha to the measured gain: only the shape (zeros) is left to explain
     for k, s in enumerate(ctx.sines):
         sp = specimen_for(ctx.specimens, s.pressure_kPa)
-        p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(sensor_x=xi * ctx.length))[0]
+        p.Hd[k] = gain * transfer.frf(np.array([s.f]), sp.with_(sensor_x=min(xi, 1.0) * ctx.length))[0]
     for k, st in enumerate(ctx.steps):
-        sp = specimen_for(ctx.specimens, st.pressure_kPa).with_(sensor_x=xi * ctx.length)
-        p.step_d[k] = predict_step(sp, st)[0]
+        sp = specimen_for(ctx.specimens, st.pressure_kPa).with_(sensor_x=min(xi, 1.0) * ctx.length)
+        p.step_d[k] = gain * predict_step(sp, st)[0]
     return p
 
 
 def _clamp_relaxation(th, ctx):
-    rate, b_kt, b_gain = th
+    loss, tau, b_kt, b_gain = th
     p = baseline(ctx)
-    p.drift = -rate
+    first: dict = {}
+    for s in ctx.sines:
+        first[s.pressure_kPa] = min(first.get(s.pressure_kPa, np.inf), s.t_start)
     for k, s in enumerate(ctx.sines):
+        p.force_rel[k] = -loss * (1.0 - np.exp(-max(s.t_start - first[s.pressure_kPa], 0.0) / tau))
         if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
             continue
-        rel = s.force_mean / ctx.force_nominal[k]
+        rel = s.force_mean / ctx.force_nominal[k]  # K_t bar and the gain follow the force the load cell reads
         sp = specimen_for(ctx.specimens, s.pressure_kPa)
-        sp2 = sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt)
-        p.Hd[k] = transfer.frf(np.array([s.f]), sp2)[0] * rel**b_gain
+        p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt))[0] * rel**b_gain
     return p
 
 
@@ -234,8 +235,8 @@ CATALOGUE: dict[str, Extension] = {
         Extension("faradaic_current", ("g1_S", "g3_S_per_V2"), (0.0, 0.0), (-0.05, -0.05), (0.05, 0.05), _faradaic, "parallel odd-polynomial conductance i = g1 v + g3 v^3"),
         Extension("hysteresis", ("weight", "play_V"), (0.2, 0.05), (0.0, 1e-3), (1.0, 1.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive"),
         Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel"),
-        Extension("sensor_offset", ("x_over_L",), (0.9,), (0.3,), (1.0,), _sensor_offset, "laser spot at x_m < L: read w(x_m)"),
-        Extension("clamp_relaxation", ("creep_per_s", "kt_exponent", "gain_exponent"), (0.0, 1.0, 0.0), (-1e-2, -10.0, -10.0), (1e-2, 10.0, 10.0), _clamp_relaxation, "force creep; K_t bar and gain follow the measured force"),
+        Extension("sensor_offset", ("x_over_L", "gain"), (0.9, 1.0), (0.3, 0.2), (1.0, 5.0), _sensor_offset, "laser spot at x_m < L: read w(x_m) (gain refitted)"),
+        Extension("clamp_relaxation", ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent"), (0.05, 500.0, 1.0, 0.0), (-0.2, 20.0, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0), _clamp_relaxation, "clamp force creeps, F = F0 (1 - r (1 - exp(-t/tau))); K_t bar and gain follow it"),
         Extension("dehydration", ("gain_decay_per_s", "conductance_decay_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-2, 1e-2), _dehydration, "gain and conductance decay with time"),
         Extension("strain_resistance", ("c2", "c2_current"), (0.0, 0.0), (-5.0, -5.0), (5.0, 5.0), _strain_resistance, "quadratic (even) output term from curvature-dependent electrode resistance"),
         Extension("large_deflection", ("c3",), (0.0,), (-50.0,), (500.0,), _large_deflection, "projection of the arc: delta - c3 delta^3 / L^2"),

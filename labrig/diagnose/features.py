@@ -2,7 +2,7 @@
 
 Features are chosen to be robust to the strip's unknown history at the start of each record (records are
 not time-stamped to the sample on the rig clock): FRF points and harmonic ratios from sine records
-(demodulated with a trend), the first step of each pressure (taken after rest), the load cell's drift
+(demodulated with a trend), the first step of each pressure (taken after rest), the load cell's force
 during records, and narrow line-frequency components.
 """
 
@@ -153,8 +153,11 @@ def extract(sd: SessionData) -> Features:
             ni = float(np.std(r.i[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
         amp, floor = {}, {}
+        f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
         for ch, x in (("d", r.d), ("i", r.i)):
             for f in LINE_HZ:
+                if f_drive and any(abs(k * f_drive - f) < 2.0 for k in range(1, 8)):
+                    continue  # a drive harmonic sits on the line: it would read as pickup
                 amp[(ch, f)], floor[(ch, f)] = _line(r.t, x, r.fs, f)
         rms = {ch: float(np.std(x)) or 1.0 for ch, x in (("d", r.d), ("i", r.i))}
         feats.lines.append(LineFeature(r.name, p, amp, floor, rms))
