@@ -124,20 +124,19 @@ def _play_df(a: float, r: float) -> tuple[complex, complex]:
 
 
 def _hysteresis(th, ctx):
-    w, r = th
+    w, r, gain = th
     p = baseline(ctx)
-    if w == 0:
-        return p
+    # gain refitted: the baseline's alpha already took in the average loss of gain the hysteresis causes
     for k, s in enumerate(ctx.sines):
         a = abs(_drive(s))
         n1, n3 = _play_df(a, min(r, 0.99 * a))
         g1 = (1 - w) + w * n1
-        p.Hd[k] = p.Hd[k] * g1
+        p.Hd[k] = p.Hd[k] * g1 * gain
         p.hd[k, 1] = w * n3 * ctx.Hd3[k] / (g1 * ctx.Hd[k]) * (_drive(s) / a) ** 2
     for k, st in enumerate(ctx.steps):
         sp = specimen_for(ctx.specimens, st.pressure_kPa)
         veff = (1 - w) * st.v_full + w * _play(st.v_full, r)
-        p.step_d[k] = predict_step(sp, st, veff)[0]
+        p.step_d[k] = gain * predict_step(sp, st, veff)[0]
     return p
 
 
@@ -233,7 +232,7 @@ CATALOGUE: dict[str, Extension] = {
     for e in (
         Extension("back_relaxation", ("K2", "tau2_s"), (0.5, 10.0), (-0.5, 0.2), (2.5, 300.0), _back_relaxation, "H(s)(1 - K2/(tau2 s + 1)): a slow opposing flux"),
         Extension("faradaic_current", ("g1_S", "g3_S_per_V2"), (0.0, 0.0), (-0.05, -0.05), (0.05, 0.05), _faradaic, "parallel odd-polynomial conductance i = g1 v + g3 v^3"),
-        Extension("hysteresis", ("weight", "play_V"), (0.2, 0.05), (0.0, 1e-3), (1.0, 1.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive"),
+        Extension("hysteresis", ("weight", "play_V", "gain"), (0.2, 0.05, 1.0), (0.0, 1e-3, 0.2), (1.0, 1.0, 5.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive (gain refitted)"),
         Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel"),
         Extension("sensor_offset", ("x_over_L", "gain"), (0.9, 1.0), (0.3, 0.2), (1.0, 5.0), _sensor_offset, "laser spot at x_m < L: read w(x_m) (gain refitted)"),
         Extension("clamp_relaxation", ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent"), (0.05, 500.0, 1.0, 0.0), (-0.2, 20.0, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0), _clamp_relaxation, "clamp force creeps, F = F0 (1 - r (1 - exp(-t/tau))); K_t bar and gain follow it"),

@@ -22,7 +22,7 @@ from labrig.diagnose.features import Features, extract, predict_sines, predict_s
 from labrig.fit.session_data import SessionData
 
 FRF_FLOOR = 0.006  # relative model error the baseline is allowed on an FRF point (clean sessions: 0.4 %)
-HARM_FLOOR = 2e-3
+HARM_FLOOR = 2e-4  # the baseline is linear: its harmonics are the DAQ's quantisation, ~1e-4
 STEP_FLOOR = 0.003  # clean sessions: the first step is predicted to 0.05 %
 STEP_EFFECTIVE_POINTS = 50  # a step's residual samples are correlated: count them as this many
 LINE_SIGMA = 0.6
