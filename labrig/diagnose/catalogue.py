@@ -36,6 +36,7 @@ class Context:
     force_nominal: np.ndarray  # N, per sine: the clamp target (from the pressure)
     area: float
     length: float
+    base: "Prediction | None" = None  # accepted effects so far: extensions build on it (forward selection)
 
 
 @dataclass
@@ -51,6 +52,11 @@ class Prediction:
 
 
 def baseline(ctx: Context) -> Prediction:
+    """The baseline's predictions, or those of the effects already accepted (a fresh copy)."""
+    if ctx.base is not None:
+        b = ctx.base
+        return Prediction(b.Hd.copy(), b.Hi.copy(), b.hd.copy(), b.hi.copy(), [d.copy() for d in b.step_d],
+                          [i.copy() for i in b.step_i], b.force_rel.copy(), dict(b.line))
     n = len(ctx.sines)
     return Prediction(ctx.Hd.copy(), ctx.Hi.copy(), np.zeros((n, 2), complex), np.zeros((n, 2), complex),
                       [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], np.zeros(n), {})

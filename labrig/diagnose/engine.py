@@ -151,6 +151,23 @@ def _fit_extension(name: str, ctx: Context) -> tuple[np.ndarray, float]:
     return best_x, best
 
 
+def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_heldout: float) -> list[Candidate]:
+    out = []
+    for name in names:
+        ext = CATALOGUE[name]
+        th, c = _fit_extension(name, ctx_fit)
+        dbic = c - c0 + len(th) * math.log(max(n, 2))
+        h = nrmse(blocks(ext.apply(th, ctx_held), ctx_held))
+        out.append(Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, h / base_heldout if base_heldout > 0 else float("nan"), c))
+    return sorted(out, key=lambda c: c.delta_bic)
+
+
+def _significant(cands: list[Candidate]) -> list[Candidate]:
+    """Significant on the fitted half, ranked by how well they predict the held-out half: an extension
+    flexible enough to soak up any residual on the fitted records does not carry over to other pressures."""
+    return sorted((c for c in cands if c.delta_bic < DBIC_EFFECT and c.heldout_ratio < RATIO_EFFECT), key=lambda c: c.heldout_ratio)
+
+
 def split(feats: Features) -> tuple[set, set]:
     ps = feats.pressures()
     if len(ps) >= 2:
@@ -169,18 +186,26 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     b_held = blocks(baseline(ctx_held), ctx_held)
     c0, n = chi2(b_fit)
     base_heldout = nrmse(b_held)
-    cands: list[Candidate] = []
-    for name, ext in CATALOGUE.items():
-        th, c = _fit_extension(name, ctx_fit)
-        dbic = c - c0 + len(th) * math.log(max(n, 2))
-        h = nrmse(blocks(ext.apply(th, ctx_held), ctx_held))
-        cands.append(Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, h / base_heldout if base_heldout > 0 else float("nan"), c))
-    cands.sort(key=lambda c: c.delta_bic)
+    cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, base_heldout)
+    named = _significant(cands)
+    # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
+    # effect is judged against what the first leaves, not against a residual it cannot explain
+    accepted = list(named[:1])
+    while accepted and len(accepted) < 3:
+        last = accepted[-1]
+        ext = CATALOGUE[last.name]
+        th = np.array([last.params[p] for p in ext.params])
+        pf, ph = ext.apply(th, ctx_fit), ext.apply(th, ctx_held)  # both on the current base, then adopt
+        ctx_fit.base, ctx_held.base = pf, ph
+        c1, _ = chi2(blocks(baseline(ctx_fit), ctx_fit))
+        h1 = nrmse(blocks(baseline(ctx_held), ctx_held))
+        rest = _significant(_score(ctx_fit, ctx_held, [c.name for c in cands if c.name not in {a.name for a in accepted}], c1, n, h1))
+        if not rest:
+            break
+        accepted.append(rest[0])
+    ctx_fit.base = ctx_held.base = None
     c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
     dof_chi2 = c_all / max(n_all, 1)
-    # significant on the fitted half, then ranked by how well they predict the held-out half: an extension
-    # flexible enough to soak up any residual on the fitted records does not carry over to other pressures
-    named = sorted((c for c in cands if c.delta_bic < DBIC_EFFECT and c.heldout_ratio < RATIO_EFFECT), key=lambda c: c.heldout_ratio)
     if named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0
@@ -194,7 +219,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         "verdict": verdict,
         "cause": cause,
         "confidence": confidence,
-        "effects": [c.name for c in named],
+        "effects": [c.name for c in accepted],
         "candidates": [
             {"name": c.name, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
             for c in cands
