@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 
 import click
@@ -63,5 +64,22 @@ def main(argv: list[str] | None = None) -> int:
         raise
 
 
+def qt_was_used() -> bool:
+    """A QApplication exists in this process (the live window or a replay ran)."""
+    qtw = sys.modules.get("PySide6.QtWidgets")
+    return qtw is not None and qtw.QApplication.instance() is not None
+
+
+def end_process(code: int) -> None:
+    """Exit with ``code``. After Qt ran, skip interpreter finalisation: PySide6 6.12 + pyqtgraph tear
+    their C++ objects down after the Python modules they call into and segfault (exit 139) after a run
+    that succeeded. Every session file is closed and flushed by then, so nothing is lost."""
+    if qt_was_used():
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
+    sys.exit(code)
+
+
 def entry() -> None:
-    sys.exit(main())
+    end_process(main())

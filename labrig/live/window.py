@@ -61,7 +61,8 @@ class LiveWindow(QtWidgets.QMainWindow):
 
     # ------------------------------------------------------------------ layout
     def _build(self) -> None:
-        pg.setConfigOptions(antialias=False, background="w", foreground="k")
+        # exitCleanup=False: its atexit teardown of graphics items segfaults PySide6 6.12 at interpreter exit
+        pg.setConfigOptions(antialias=False, background="w", foreground="k", exitCleanup=False)
         central = QtWidgets.QWidget()
         outer = QtWidgets.QVBoxLayout(central)
         bar = QtWidgets.QHBoxLayout()
