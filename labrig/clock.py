@@ -49,8 +49,4 @@ class ScaledClock:
         return event.wait(max(seconds, 0.0) / self.time_scale)
 
 
-def wall_clock() -> ScaledClock:
-    """The clock of a real bench."""
-    return ScaledClock(1.0)
-
 SIM_TIME_SCALE = 1000.0  # default speed of a simulated bench: a 40-minute sweep in a few seconds

@@ -30,7 +30,7 @@ from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
-from labrig.errors import BadInput
+from labrig.errors import BadInput, validation_error
 from labrig.physics import presets
 
 
@@ -103,10 +103,7 @@ def parse_rig(data: dict[str, Any], source: str) -> RigFile:
     try:
         cfg = RigFile.model_validate(data)
     except ValidationError as exc:
-        err = exc.errors()[0]
-        where = ".".join(str(p) for p in err["loc"]) or "(top level)"
-        msg = "unknown field" if err["type"] == "extra_forbidden" else err["msg"]
-        raise BadInput(f"{source}: {where}: {msg}") from None
+        raise validation_error(exc, source) from None
     if cfg.sample.preset not in presets.names():
         raise BadInput(f"{source}: sample.preset: unknown preset {cfg.sample.preset!r} (known: {', '.join(presets.names())})")
     if cfg.instruments.clamp.mode == "motor" and not cfg.instruments.clamp.address:

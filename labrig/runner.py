@@ -24,7 +24,6 @@ from labrig.rig import Rig
 from protocols.registry import LoadedProtocol
 from protocols.steps import Impedance, Record, SetClamp, Settle, Step, peak_drive
 
-EXIT_CODES = {"success": 0, "abort": 1, "fail": 1}
 BLOCK_ROWS = 20000  # rows per data block of a record (what a crash can lose at most)
 
 

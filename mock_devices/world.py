@@ -14,21 +14,13 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from typing import Protocol
 
 import numpy as np
 
 from labrig.physics import impedance as imp
 from labrig.physics import presets, timeresp, transfer
 from labrig.physics.params import Specimen
-
-
-class Clock(Protocol):
-    time_scale: float
-
-    def now(self) -> float: ...
-
-    def sleep(self, seconds: float) -> None: ...
+from mock_devices.bench_api import SimClock as Clock
 
 
 @dataclass

@@ -19,7 +19,7 @@ from typing import Any, Callable, Iterator
 
 from pydantic import ValidationError
 
-from labrig.errors import BadInput
+from labrig.errors import BadInput, validation_error
 from protocols.config import Strict
 from protocols.paper_sweep import PaperSweep, paper_sweep
 from protocols.single import (
@@ -75,10 +75,7 @@ def _validate(name: str, data: dict[str, Any], source: str) -> LoadedProtocol:
     try:
         return LoadedProtocol(name, model.model_validate(data), source)
     except ValidationError as exc:
-        err = exc.errors()[0]
-        where = ".".join(str(p) for p in err["loc"]) or "(top level)"
-        msg = "unknown field" if err["type"] == "extra_forbidden" else err["msg"]
-        raise BadInput(f"{source}: {where}: {msg}") from None
+        raise validation_error(exc, source) from None
 
 
 def from_dict(data: dict[str, Any], source: str) -> LoadedProtocol:

@@ -94,18 +94,18 @@ def _clamped(cfg: _AtPressure, area: float) -> Iterator[Step]:
     yield from clamp_steps("", cfg.pressure_kPa, area, c.tolerance_N, c.hold_s, c.timeout_s, c.settle_s)
 
 
+# which settings table each single-test protocol has, and the steps it makes of it
+_TESTS = {
+    EisProtocol: ("eis", eis_steps),
+    SteppedSineProtocol: ("stepped_sine", stepped_sine_steps),
+    MultisineProtocol: ("multisine", multisine_steps),
+    StepProtocol: ("step", step_steps),
+    HarmonicProtocol: ("harmonic", harmonic_steps),
+    AmplitudeSeriesProtocol: ("amplitude_series", amplitude_series_steps),
+}
+
+
 def single_plan(cfg: _AtPressure, clamp_area_m2: float) -> Iterator[Step]:
-    meta = {"pressure_kPa": cfg.pressure_kPa}
     yield from _clamped(cfg, clamp_area_m2)
-    if isinstance(cfg, EisProtocol):
-        yield from eis_steps(cfg.eis, **meta)
-    elif isinstance(cfg, SteppedSineProtocol):
-        yield from stepped_sine_steps(cfg.stepped_sine, **meta)
-    elif isinstance(cfg, MultisineProtocol):
-        yield from multisine_steps(cfg.multisine, **meta)
-    elif isinstance(cfg, StepProtocol):
-        yield from step_steps(cfg.step, **meta)
-    elif isinstance(cfg, HarmonicProtocol):
-        yield from harmonic_steps(cfg.harmonic, **meta)
-    elif isinstance(cfg, AmplitudeSeriesProtocol):
-        yield from amplitude_series_steps(cfg.amplitude_series, **meta)
+    table, steps = _TESTS[type(cfg)]
+    yield from steps(getattr(cfg, table), pressure_kPa=cfg.pressure_kPa)

@@ -25,10 +25,8 @@ def _register() -> None:
     app.add_command(diagnose_cmd.diagnose_cmd)
     app.add_command(run_cmd.run_cmd)
     app.add_command(run_cmd.sim_cmd)
-    try:
-        from labrig.cli import session_cmds
-    except ImportError:  # not there yet in this tree
-        return
+    from labrig.cli import session_cmds
+
     session_cmds.register(app)
     from labrig.cli import live_cmds
     live_cmds.register(app)

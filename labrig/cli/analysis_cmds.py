@@ -17,18 +17,24 @@ def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
     return np.array([np.nan if r.get(key) is None else float(r[key]) for r in rows])
 
 
-def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead") -> dict[str, Any]:
-    """Fit the seed-000 model (and seed 001's where the data allows) to a session; store the results under
-    /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
+def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
+    """The session's data and its seed-000 fit: what `fit` reports and `diagnose` builds on (done once)."""
     from labrig.fit.seed000 import fit_seed000
-    from labrig.fit.seed001 import fit_seed001
     from labrig.fit.session_data import load_session
-    from labrig.store import SessionFile
 
     sd = load_session(path)
     if not sd.pressures and not sd.unpressured:
-        raise BadInput(f"{path}: no finished records to fit")
-    fit = fit_seed000(sd)
+        raise BadInput(f"{path}: no finished records to {what}")
+    return sd, fit_seed000(sd)
+
+
+def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None) -> dict[str, Any]:
+    """Fit the seed-000 model (and seed 001's where the data allows) to a session; store the results under
+    /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
+    from labrig.fit.seed001 import fit_seed001
+    from labrig.store import SessionFile
+
+    sd, fit = fitted or load_and_fit(path)
     out = jsonable(fit.to_json())
     out["seed001"] = None
     if seed001 != "off":
@@ -94,11 +100,12 @@ def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str) -> N
 
 
 def after_run(path: Path, fit: bool, diagnose: bool, quiet: bool) -> None:
+    fitted = load_and_fit(path)
     if fit:
-        out = run_fit(path)
+        out = run_fit(path, fitted=fitted)
         if not quiet:
             _summary(out)
     if diagnose:
         from labrig.cli import diagnose_cmd
 
-        diagnose_cmd.run_and_print(path, as_json=False, quiet=quiet)
+        diagnose_cmd.run_and_print(path, as_json=False, quiet=quiet, fitted=fitted)

@@ -12,17 +12,14 @@ from labrig.cli.common import jsonable, print_json
 from labrig.errors import BadInput
 
 
-def run_diagnosis(path: str | Path) -> dict[str, Any]:
-    from labrig.diagnose.engine import diagnose
+def run_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str, Any]:
+    """Diagnose a session on top of its seed-000 fit (``fitted`` from ``load_and_fit``, or made here)."""
+    from labrig.cli.analysis_cmds import load_and_fit
     from labrig.diagnose.catalogue import CATALOGUE
-    from labrig.fit.seed000 import fit_seed000
-    from labrig.fit.session_data import load_session
+    from labrig.diagnose.engine import diagnose
     from labrig.store import SessionFile
 
-    sd = load_session(path)
-    if not sd.pressures and not sd.unpressured:
-        raise BadInput(f"{path}: no finished records to diagnose")
-    fit = fit_seed000(sd)
+    sd, fit = fitted or load_and_fit(path, "diagnose")
     out = jsonable(diagnose(sd, fit.specimens))
     if out["cause"]:
         out["extension"] = CATALOGUE[out["cause"]].describe
@@ -48,8 +45,8 @@ def summary(out: dict[str, Any]) -> None:
     click.echo(f"fitted on {split['fit'] or 'all'} kPa, held out {split['heldout'] or 'the same records'} kPa")
 
 
-def run_and_print(path: str | Path, as_json: bool, quiet: bool = False) -> dict[str, Any]:
-    out = run_diagnosis(path)
+def run_and_print(path: str | Path, as_json: bool, quiet: bool = False, fitted: tuple | None = None) -> dict[str, Any]:
+    out = run_diagnosis(path, fitted)
     if as_json:
         print_json(out)
     elif not quiet:

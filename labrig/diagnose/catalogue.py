@@ -7,7 +7,7 @@ harmonic ratios, first step response, clamp force against its target, line-frequ
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -71,7 +71,6 @@ class Extension:
     hi: tuple[float, ...]
     apply: Callable[[np.ndarray, Context], Prediction]
     describe: str = ""
-    units: dict = field(default_factory=dict)
 
 
 def _drive(s: SineFeature) -> complex:

@@ -20,6 +20,7 @@ from scipy.optimize import least_squares
 from labrig.diagnose.catalogue import CATALOGUE, Context, Prediction, baseline
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for
 from labrig.fit.session_data import SessionData
+from labrig.physics import transfer
 
 FRF_FLOOR = 0.006  # relative model error the baseline is allowed on an FRF point (clean sessions: 0.4 %)
 HARM_FLOOR = 2e-4  # the baseline is linear: its harmonics are the DAQ's quantisation, ~1e-4
@@ -40,8 +41,8 @@ def build_context(feats: Features, specimens: dict, group: set) -> Context:
         idx = [k for k, s in enumerate(sines) if s.pressure_kPa == p]
         sp = specimen_for(specimens, p)
         d, i = predict_sines(sp, [sines[k] for k in idx])
-        d3, _ = predict_sines(sp, [type(sines[k])(**{**sines[k].__dict__, "f": 3 * sines[k].f}) for k in idx])
-        Hd[idx], Hi[idx], Hd3[idx] = d, i, d3
+        Hd[idx], Hi[idx] = d, i
+        Hd3[idx] = transfer.frf(3 * np.array([sines[k].f for k in idx]), sp)
     sd, si = [], []
     for st in steps:
         d, i = predict_step(specimen_for(specimens, st.pressure_kPa), st)

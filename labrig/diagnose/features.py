@@ -190,6 +190,3 @@ def specimen_for(specimens: dict[float, Specimen], p: float | None) -> Specimen:
     return specimens[min(keys, key=lambda k: abs(k - p))]
 
 
-def by_pressure(items: list, pressures: set[float | None]) -> list:
-    return [x for x in items if x.pressure_kPa in pressures]
-
