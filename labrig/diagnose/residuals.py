@@ -1,0 +1,153 @@
+"""Held-out residuals before (baseline) and after (the diagnosis' extension), block by block.
+
+The evidence behind a diagnosis: the held-out context is rebuilt from the engine's public pieces
+(``features.extract``, ``engine.split``, ``engine.build_context``, ``engine.blocks``) and the baseline and the
+named extension are evaluated on it with the parameters the diagnosis fitted on the other half. Nothing is
+refitted, so this takes the time of one context (about a second), not of a diagnosis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from labrig.diagnose import engine
+from labrig.diagnose.catalogue import CATALOGUE, Context, baseline
+from labrig.diagnose.features import Features, extract
+from labrig.fit.session_data import SessionData
+
+BLOCK_TITLES = {
+    "frf_d": "displacement FRF (sine records)",
+    "frf_i": "current FRF (sine records)",
+    "harm_d": "displacement harmonics 2f, 3f",
+    "harm_i": "current harmonics 2f, 3f",
+    "force": "clamp force against its target",
+    "step_d": "step response, displacement",
+    "step_i": "step response, current",
+    "line": "50/60 Hz line components",
+}
+
+
+@dataclass
+class BlockResiduals:
+    """One feature block's held-out residuals, in units of its noise (and model floor)."""
+
+    name: str
+    before: np.ndarray
+    after: np.ndarray
+    x: np.ndarray  # abscissa of each residual (Hz, s or feature index)
+    x_label: str
+    x_log: bool = False
+    series: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=object))  # label of each point
+
+    @property
+    def title(self) -> str:
+        return BLOCK_TITLES.get(self.name, self.name)
+
+    @property
+    def rms_before(self) -> float:
+        return _rms(self.before)
+
+    @property
+    def rms_after(self) -> float:
+        return _rms(self.after)
+
+    @property
+    def improvement(self) -> float:
+        """How much the extension lowers this block's RMS residual (noise units; negative = worse)."""
+        return self.rms_before - self.rms_after
+
+
+@dataclass
+class HeldoutResiduals:
+    extension: str
+    params: dict[str, float]
+    accepted: bool  # the diagnosis named this extension (else: its best candidate, for the record)
+    heldout_kPa: list[float]
+    same_records: bool  # one pressure only: fitted and held-out records are the same
+    blocks: list[BlockResiduals]
+
+    @property
+    def nrmse_before(self) -> float:
+        return _nrmse([b.before for b in self.blocks])
+
+    @property
+    def nrmse_after(self) -> float:
+        return _nrmse([b.after for b in self.blocks])
+
+    def evidence(self, most: int = 2) -> list[BlockResiduals]:
+        """The blocks the extension fixes most: those within half of the largest improvement, best first."""
+        better = sorted((b for b in self.blocks if b.improvement > 0), key=lambda b: -b.improvement)
+        if not better:
+            return []
+        return [b for b in better if b.improvement >= 0.5 * better[0].improvement][:most]
+
+
+def _rms(x: np.ndarray) -> float:
+    return float(np.sqrt(np.mean(np.square(x)))) if x.size else float("nan")
+
+
+def _nrmse(parts: list[np.ndarray]) -> float:
+    """The engine's held-out error: RMS over blocks of each block's RMS (blocks of different size weigh alike)."""
+    per = [_rms(p) for p in parts if p.size]
+    return float(np.sqrt(np.mean(np.square(per)))) if per else float("nan")
+
+
+def _abscissa(name: str, ctx: Context, size: int) -> tuple[np.ndarray, str, bool, np.ndarray]:
+    """Where each residual of a block sits: frequency for sine blocks, time for steps, else its index.
+
+    Follows the layout of ``engine.blocks`` (real parts then imaginary parts); when a block's size does not
+    match that layout (the engine changed) it falls back to the index rather than mislabelling points."""
+    f = np.array([s.f for s in ctx.sines])
+    if name in ("frf_d", "frf_i") and size == 2 * f.size:
+        return np.tile(f, 2), "frequency (Hz)", True, np.repeat(np.array(["Re", "Im"], dtype=object), f.size)
+    if name in ("harm_d", "harm_i") and size == 4 * f.size:
+        series = np.array([f"{k} {part}" for part in ("Re", "Im") for _ in f for k in ("2f", "3f")], dtype=object)
+        return np.tile(np.repeat(f, 2), 2), "drive frequency (Hz)", True, series
+    if name in ("step_d", "step_i") and size == sum(st.t.size for st in ctx.steps):
+        x = np.concatenate([st.t - st.t[0] for st in ctx.steps]) if ctx.steps else np.zeros(0)
+        lab = np.concatenate([np.full(st.t.size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x
+        return x, "time from record start (s)", False, lab
+    if name == "line":
+        series = np.array([f"{'displacement' if ch == 'd' else 'current'} {hz:g} Hz" for line in ctx.lines
+                           for (ch, hz), fl in line.floor.items() if np.isfinite(fl) and fl > 0], dtype=object)
+        if series.size == size:  # the engine skips components without a finite noise floor
+            return np.arange(size, dtype=float), "line component (record by record)", False, series
+    return np.arange(size, dtype=float), "feature index", False, np.full(size, "", dtype=object)
+
+
+def _pressure_label(p: float | None) -> str:
+    return "no pressure" if p is None else f"{p:g} kPa"
+
+
+def heldout_context(sd: SessionData, specimens: dict, feats: Features | None = None) -> tuple[Context, set, bool]:
+    """The diagnosis' held-out context, its pressures and whether it is the fitted half too."""
+    feats = extract(sd) if feats is None else feats
+    fit_set, held_set = engine.split(feats)
+    return engine.build_context(feats, specimens, held_set), held_set, fit_set == held_set
+
+
+def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], feats: Features | None = None) -> HeldoutResiduals | None:
+    """Per-block held-out residuals of the baseline and of ``result``'s extension (``result["extended"]``).
+
+    None when the diagnosis had nothing to compare (no sine or step records) or names no extension."""
+    ext_info = result.get("extended") or {}
+    name = ext_info.get("name") or result.get("cause")
+    if not name or name not in CATALOGUE or not result.get("baseline", {}).get("blocks"):
+        return None
+    ext = CATALOGUE[name]
+    theta = np.array([float(ext_info["params"][p]) for p in ext.params])
+    ctx, held, same = heldout_context(sd, specimens, feats)
+    before = engine.blocks(baseline(ctx), ctx)
+    after = engine.blocks(ext.apply(theta, ctx), ctx)
+    out = []
+    for key, (b, _) in before.items():
+        a = after.get(key, (np.full(b.shape, np.nan), None))[0]
+        if not b.size or a.shape != b.shape:
+            continue
+        x, label, log, series = _abscissa(key, ctx, b.size)
+        out.append(BlockResiduals(key, b, a, x, label, log, series))
+    return HeldoutResiduals(name, dict(ext_info["params"]), bool(ext_info.get("accepted", result.get("cause") == name)),
+                            sorted(p for p in held if p is not None), same, out)
