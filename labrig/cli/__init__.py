@@ -30,6 +30,9 @@ def _register() -> None:
     session_cmds.register(app)
     from labrig.cli import live_cmds
     live_cmds.register(app)
+    from labrig.cli import report_cmd
+
+    app.add_command(report_cmd.report_cmd)
 
 
 def main(argv: list[str] | None = None) -> int:

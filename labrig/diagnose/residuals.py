@@ -19,8 +19,8 @@ from labrig.diagnose.features import Features, extract
 from labrig.fit.session_data import SessionData
 
 BLOCK_TITLES = {
-    "frf_d": "displacement FRF (sine records)",
-    "frf_i": "current FRF (sine records)",
+    "frf_d": "displacement FRF, sine records",
+    "frf_i": "current FRF, sine records",
     "harm_d": "displacement harmonics 2f, 3f",
     "harm_i": "current harmonics 2f, 3f",
     "force": "clamp force against its target",
