@@ -124,20 +124,29 @@ def gain_figure(res: HeldoutResiduals, diagnosis: dict) -> Figure:
     return fig
 
 
-def pareto_figure(seed001: dict) -> Figure | None:
-    """Seed 001's NSGA-II front: current NRMSE against displacement NRMSE, the knee marked."""
+def knee(seed001: dict) -> tuple[float, float] | None:
+    """(current error, displacement error) at the knee of the stored front (the fitter's own rule), or None."""
     from labrig.fit.hammerstein import knee_point
 
     front = seed001.get("pareto_front")
     if not front:
         return None
     F = np.asarray(front, float)
-    order = np.argsort(F[:, 0])
     k = knee_point(F)
+    return float(F[k, 0]), float(F[k, 1])
+
+
+def pareto_figure(seed001: dict) -> Figure | None:
+    """Seed 001's NSGA-II front: current NRMSE against displacement NRMSE, the knee marked."""
+    kn = knee(seed001)
+    if kn is None:
+        return None
+    F = np.asarray(seed001["pareto_front"], float)
+    order = np.argsort(F[:, 0])
     fig = Figure(figsize=(7.0, 5.0), layout="constrained")
     ax = fig.subplots()
     ax.plot(F[order, 0], F[order, 1], "o-", color="C0", markersize=5, label="non-dominated set (NSGA-II)")
-    ax.plot(F[k, 0], F[k, 1], "*", color="C3", markersize=16, label=f"knee: current {F[k, 0]:.3g}, displacement {F[k, 1]:.3g}")
+    ax.plot(*kn, "*", color="C3", markersize=16, label=f"knee: current {kn[0]:.3g}, displacement {kn[1]:.3g}")
     ax.set_xlabel("current error (NRMSE)")
     ax.set_ylabel("displacement error (NRMSE)")
     if np.all(F > 0):  # fronts are L-shaped: on log axes the knee region is not squashed into a corner

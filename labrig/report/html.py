@@ -85,12 +85,14 @@ def table(header: Sequence[str], rows: Iterable[Sequence[str]], cls: str = "", r
     return f"<table{_cls(cls)}><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
 
 
-def figure(fig: Figure, name: str, caption: str) -> str:
-    """The figure as an embedded PNG (``data:`` URI), tagged with ``data-figure`` = ``name``."""
+def figure(fig: Figure, name: str, caption: str, data_attrs: dict[str, Any] | None = None) -> str:
+    """The figure as an embedded PNG (``data:`` URI), tagged with ``data-figure`` = ``name`` and any
+    ``data_attrs`` (the exact numbers the figure shows, for tools)."""
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=DPI)
     data = base64.b64encode(buf.getvalue()).decode("ascii")
-    return (f'<figure data-figure="{esc(name)}"><img alt="{esc(caption)}" src="data:image/png;base64,{data}">'
+    extra = "".join(f' data-{esc(k)}="{esc(v)}"' for k, v in (data_attrs or {}).items())
+    return (f'<figure data-figure="{esc(name)}"{extra}><img alt="{esc(caption)}" src="data:image/png;base64,{data}">'
             f"<figcaption>{esc(caption)}</figcaption></figure>")
 
 

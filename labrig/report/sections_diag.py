@@ -24,6 +24,9 @@ def seed001(data: ReportData) -> str:
             f"({', '.join(s.get('records') or [])}); {data.seed001_source}. At the chosen point the current error is "
             f"{h.fmt(s.get('nrmse_current'), 3)} and the displacement error {h.fmt(s.get('nrmse_displacement'), 3)} (NRMSE).")
     fig = fd.pareto_figure(s)
+    knee = fd.knee(s)
+    if knee is not None:
+        text += f" The knee of the front: current error {knee[0]:.4g}, displacement error {knee[1]:.4g}."
     body = h.para(text) + (h.figure(fig, "pareto", "Non-dominated set of NSGA-II over (current error, displacement error); "
                                     "the star is the knee, nearest the utopia point with both errors scaled by their best value.")
                            if fig is not None else h.missing("The stored identification has no Pareto front (not NSGA-II)."))
@@ -105,8 +108,9 @@ def _residual_figures(data: ReportData) -> str:
     where = "at its fitted parameters" if res.same_records else "at the parameters fitted on the other pressures"
     out = "<h3>Residuals before and after</h3>"
     fig = fd.residuals_figure(res)
+    nrmse = {"nrmse-before": repr(res.nrmse_before), "nrmse-after": repr(res.nrmse_after)}
     out += h.figure(fig, "residuals", f"Held-out residuals of every feature block in units of their noise: grey the baseline, "
-                    f"red with {_role(res)}, {where}.") if fig is not None else h.missing("No feature blocks on the held-out records.")
+                    f"red with {_role(res)}, {where}.", nrmse) if fig is not None else h.missing("No feature blocks on the held-out records.")
     out += "<h3>Evidence</h3>" + h.para(_evidence_text(res))
     fig = fd.evidence_figure(res)
     if fig is not None:
