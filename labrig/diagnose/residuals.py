@@ -101,11 +101,17 @@ def _abscissa(name: str, ctx: Context, size: int) -> tuple[np.ndarray, str, bool
     Follows the layout of ``engine.blocks`` (real parts then imaginary parts); when a block's size does not
     match that layout (the engine changed) it falls back to the index rather than mislabelling points."""
     f = np.array([s.f for s in ctx.sines])
+    x, x_label, log = f, "drive frequency (Hz)", True
+    amp = np.array([s.amplitude_V for s in ctx.sines])
+    if f.size > 1 and np.ptp(f) == 0 and np.ptp(amp) > 0:  # an amplitude series: one frequency, several drives
+        x, x_label, log = amp, "drive amplitude (V)", False
     if name in ("frf_d", "frf_i") and size == 2 * f.size:
-        return np.tile(f, 2), "frequency (Hz)", True, np.repeat(np.array(["Re", "Im"], dtype=object), f.size)
+        return np.tile(x, 2), x_label, log, np.repeat(np.array(["Re", "Im"], dtype=object), f.size)
     if name in ("harm_d", "harm_i") and size == 4 * f.size:
         series = np.array([f"{k} {part}" for part in ("Re", "Im") for _ in f for k in ("2f", "3f")], dtype=object)
-        return np.tile(np.repeat(f, 2), 2), "drive frequency (Hz)", True, series
+        return np.tile(np.repeat(x, 2), 2), x_label, log, series
+    if name == "force" and size == f.size:
+        return np.arange(size, dtype=float), "sine record (in order)", False, np.full(size, "", dtype=object)
     if name in ("step_d", "step_i") and size == sum(st.t.size for st in ctx.steps):
         x = np.concatenate([st.t - st.t[0] for st in ctx.steps]) if ctx.steps else np.zeros(0)
         lab = np.concatenate([np.full(st.t.size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x

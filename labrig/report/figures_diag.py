@@ -92,7 +92,8 @@ def evidence_figure(res: HeldoutResiduals) -> Figure | None:
             ax.plot(b.x[m], b.after[m], markers[k % 10], color=AFTER_COLOUR, label=f"{name}, after")
         _draw_axes(ax, b, small=False)
         ax.legend(fontsize=7, ncol=2)
-    fig.suptitle(f"Evidence for {res.extension}: the residual block(s) it fixes most, {_held_text(res)}")
+    lead = f"Evidence for {res.extension}" if res.accepted else f"{res.extension} (best candidate, not accepted)"
+    fig.suptitle(f"{lead}: the residual block(s) it fixes most, {_held_text(res)}")
     return fig
 
 
