@@ -1,5 +1,7 @@
-"""Estimators from raw records: FRF by sine demodulation, best linear approximation from multisines,
-step and harmonic metrics. Pure functions of sample arrays (SI units).
+"""Estimators from raw records: FRF by sine demodulation, best linear approximation from multisines (with
+noise and nonlinear-distortion variances, odd and even distortion apart), drift between repeated records and
+within long ones, the load-cell force trend, step and harmonic metrics. Pure functions of sample arrays (SI
+units). Equations and references: docs/estimation.md.
 """
 
 from __future__ import annotations
@@ -35,16 +37,20 @@ def demodulate(t: np.ndarray, x: np.ndarray, f: float, harmonics: int = 1, trend
     Linear least squares with a polynomial of degree ``trend``: the slow drift of a charging CPE would
     otherwise leak into the estimate (a plain DFT over whole cycles only rejects a constant).
     """
+    coef = np.linalg.lstsq(_design(t, f, harmonics, trend), np.asarray(x, float), rcond=None)[0]
+    c = coef[trend + 1 :].reshape(-1, 2)
+    return c[:, 0] - 1j * c[:, 1]
+
+
+def _design(t: np.ndarray, f: float, harmonics: int, trend: int) -> np.ndarray:
+    """Columns: polynomial trend of degree ``trend`` in centred, scaled time, then cos and sin at k f."""
     t = np.asarray(t, float)
     tc = (t - t.mean()) / max(np.ptp(t), 1e-12)
     cols = [tc**p for p in range(trend + 1)]
     for k in range(1, harmonics + 1):
         w = 2 * np.pi * k * f * t
         cols += [np.cos(w), np.sin(w)]
-    A = np.stack(cols, axis=1)
-    coef = np.linalg.lstsq(A, np.asarray(x, float), rcond=None)[0]
-    c = coef[trend + 1 :].reshape(-1, 2)
-    return c[:, 0] - 1j * c[:, 1]
+    return np.stack(cols, axis=1)
 
 
 def _whole_cycles(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
@@ -73,65 +79,432 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn)
 
 
+# ------------------------------------------------------------------------------------------- multisine BLA
+
+TRANSIENT_TAUS_S = (0.5, 1.5, 5.0, 15.0)  # the strip's tails (s): ring-down (~0.3 s in water), double-layer and CPE charging
+
+
+def _moving_mean(x: np.ndarray, half: int) -> np.ndarray:
+    """Centred moving average over 2 half + 1 neighbours (fewer at the ends); NaNs are left out."""
+    x = np.asarray(x)
+    if half <= 0 or x.size == 0:
+        return x
+    ok = np.isfinite(x)
+    c = np.concatenate([[0], np.cumsum(np.where(ok, x, 0))])
+    m = np.concatenate([[0], np.cumsum(ok)])
+    k = np.arange(x.size)
+    lo, hi = np.maximum(k - half, 0), np.minimum(k + half + 1, x.size)
+    cnt = m[hi] - m[lo]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(cnt > 0, (c[hi] - c[lo]) / np.maximum(cnt, 1), np.nan)
+
+
+def classify_lines(excited_bins: np.ndarray, top_bin: int, detection_bins: np.ndarray | None = None, other_bins: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, bool]:
+    """(odd detection bins, even bins, is_odd) of a multisine on its period grid (bin k <-> k / period).
+
+    An odd multisine excites odd bins only. Odd-order nonlinearities (x^3: k1 + k2 + k3, all odd) put power
+    on odd bins only, even-order ones (x^2: k1 +- k2) on even bins only. So every odd bin in the band that
+    is not excited shows odd distortion, every even bin even distortion (DC excepted). ``detection_bins``,
+    the odd lines the design left out on purpose, must be among them. ``other_bins``: lines some
+    realisations excite and others not (older designs), which are neither. A drive that excites an even
+    bin is not an odd multisine: the unexcited bins are then returned as "odd" and the even set is empty.
+    """
+    ex = np.unique(np.asarray(excited_bins, int))
+    top = min(int(ex.max()) + 1, top_bin)
+    free = np.setdiff1d(np.arange(1, top + 1), np.union1d(ex, np.asarray(other_bins if other_bins is not None else [], int)))
+    if np.any(ex % 2 == 0):
+        return free, np.zeros(0, int), False
+    det = np.asarray(detection_bins if detection_bins is not None else [], int)
+    if det.size and (np.any(det % 2 == 0) or np.intersect1d(det, ex).size):
+        raise ValueError("detection bins must be odd and not excited")
+    return free[free % 2 == 1], free[free % 2 == 0], True
+
+
+def remove_transient(x: np.ndarray, n_period: int, excited_bins: np.ndarray, fs: float, taus_s: tuple[float, ...] = TRANSIENT_TAUS_S, degree: int = 1) -> np.ndarray:
+    """``x`` (whole periods of ``n_period`` samples) minus the transient of the least-squares fit
+
+        x(t) = sum_k [a_k cos(w_k t) + b_k sin(w_k t)] + sum_{j<=degree} c_j t^j + sum_m d_m exp(-t / tau_m)
+
+    over the excited lines k. Over P whole periods the excited lines are the DFT bins P k of the window,
+    orthogonal to each other and to the other bins, so the fit separates (Frisch-Waugh): project the
+    transient basis B and x off the excited bins (one FFT), solve the small problem for (c, d), subtract
+    B (c, d). What is left is the periodic response, noise and the distortion at the unexcited lines,
+    without the slow tails left by the start (a parametric form of the transient elimination of
+    Pintelon, Vandersteen, Schoukens & Rolain, MSSP 25, 2011).
+    """
+    x = np.asarray(x, float)
+    N = x.size
+    P = N // n_period
+    t = np.arange(N) / fs
+    B = np.stack([(t / max(t[-1], 1e-12)) ** j for j in range(degree + 1)] + [np.exp(-t / tau) for tau in taus_s], axis=1)
+    bins = np.asarray(excited_bins, int) * P
+
+    def off_lines(y: np.ndarray) -> np.ndarray:
+        Y = np.fft.rfft(y, axis=0)
+        keep = np.zeros_like(Y)
+        keep[bins] = Y[bins]
+        return y - np.fft.irfft(keep, N, axis=0)
+
+    c = np.linalg.lstsq(off_lines(B), off_lines(x), rcond=None)[0]
+    return x - B @ c
+
+
+def _period_spectra(x: np.ndarray, n: int, P: int) -> np.ndarray:
+    """(P, n//2+1) single-sided amplitude spectra 2 X / n of each period."""
+    return np.fft.rfft(np.asarray(x, float)[: P * n].reshape(P, n), axis=1) * (2.0 / n)
+
+
+def _mean_noise(X: np.ndarray, Z: np.ndarray, half: int) -> np.ndarray:
+    """Covariance E[dX dZ*] of the period means of X and Z (per bin), from the period scatter, smoothed over
+    +-half bins. Periodic nonlinear distortion is the same in every period, so this is noise only."""
+    P = X.shape[0]
+    cov = np.sum((X - X.mean(0)) * np.conj(Z - Z.mean(0)), axis=0) / ((P - 1) * P)
+    return _moving_mean(cov, half)
+
+
+def _residual_noise(X: np.ndarray, excited: np.ndarray, half: int) -> np.ndarray:
+    """One period only: the noise power of each bin from the unexcited bins around it (bounds noise plus
+    nonlinear distortion, so it is conservative where the system is nonlinear)."""
+    p = np.abs(X[0]) ** 2
+    p[0] = np.nan
+    p[excited] = np.nan
+    return _moving_mean(p, half)
+
+
+def _ratio_var(G: np.ndarray, Y: np.ndarray, U: np.ndarray, syy: np.ndarray, suu: np.ndarray, syu: np.ndarray) -> np.ndarray:
+    """var(Y/U) to first order: |G|^2 (s_YY/|Y|^2 + s_UU/|U|^2 - 2 Re(s_YU / (Y U*)))."""
+    return np.abs(G) ** 2 * np.maximum(syy / np.abs(Y) ** 2 + suu / np.abs(U) ** 2 - 2 * np.real(syu / (Y * np.conj(U))), 0.0)
+
+
+@dataclass(frozen=True)
+class LineLevels:
+    """Output power at unexcited lines (single-sided amplitude squared, units^2): nonlinear distortion plus noise."""
+
+    f_Hz: np.ndarray
+    level: np.ndarray  # mean over realisations of |Y(k)|^2 (period-averaged)
+    noise: np.ndarray  # its noise part, from the period scatter (nan with one period: not separable)
+    realisations: int
+
+    @property
+    def ratio(self) -> np.ndarray:
+        """level / noise: 1 on average where there is noise only."""
+        return self.level / self.noise
+
+    def threshold(self, p: float = 0.999) -> float:
+        """The p-quantile of ``ratio`` for noise alone: mean of R exponentials, Gamma(R, 1/R)."""
+        from scipy.special import gammaincinv  # ~0.4 s to import: only when asked
+
+        return float(gammaincinv(self.realisations, p) / self.realisations)
+
+    def fraction_above(self, p: float = 0.999) -> float:
+        """Fraction of lines whose ratio exceeds the noise-only p-quantile (1 - p expected without distortion)."""
+        r = self.ratio
+        r = r[np.isfinite(r)]
+        return float(np.mean(r > self.threshold(p))) if r.size else float("nan")
+
+
 @dataclass(frozen=True)
 class BlaEstimate:
-    """Best linear approximation from an odd random-phase multisine (Pintelon & Schoukens)."""
+    """Best linear approximation from an odd random-phase multisine (Pintelon & Schoukens 2012, ch. 3-4).
+
+    Variances are of the complex estimate, E|G_hat - G|^2 (each of the real and imaginary parts has half).
+    """
 
     f_Hz: np.ndarray  # excited lines
     G_disp: np.ndarray  # BLA, m/V
     G_cur: np.ndarray  # A/V
-    noise_var_disp: np.ndarray  # variance of G_disp due to noise (from period-to-period scatter)
-    total_var_disp: np.ndarray  # variance of G_disp over realisations (noise + stochastic nonlinear distortion)
-    odd_distortion_disp: np.ndarray  # |D(f)|^2 at the odd detection lines, relative to the mean excited |Y|^2
-    even_distortion_disp: np.ndarray  # |D(f)|^2 at the even lines
-    detection_f_Hz: np.ndarray = field(default_factory=lambda: np.zeros(0))
-    even_f_Hz: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    noise_var_disp: np.ndarray  # (m/V)^2: noise only (period scatter; with one period, the neighbouring unexcited lines)
+    total_var_disp: np.ndarray  # (m/V)^2: noise + stochastic nonlinear distortion (scatter over realisations)
+    noise_var_cur: np.ndarray
+    total_var_cur: np.ndarray
+    odd_disp: LineLevels  # odd unexcited lines: odd nonlinear distortion
+    even_disp: LineLevels  # even lines: even nonlinear distortion
+    odd_cur: LineLevels
+    even_cur: LineLevels
+    realisations: int
+    periods: int  # periods averaged per realisation
+    odd_multisine: bool = True
+    # per realisation r and period p, for drift: gains at the excited lines and the time of each period
+    G_disp_rp: np.ndarray = field(default_factory=lambda: np.zeros((0, 0, 0), complex))
+    G_cur_rp: np.ndarray = field(default_factory=lambda: np.zeros((0, 0, 0), complex))
+    var_disp_p: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # (R, L) variance of one period's gain
+    var_cur_p: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    t_rp: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # s, middle of each period (record start + offset)
 
     @property
     def nonlinear_var_disp(self) -> np.ndarray:
         return np.maximum(self.total_var_disp - self.noise_var_disp, 0.0)
 
+    @property
+    def detection_f_Hz(self) -> np.ndarray:
+        return self.odd_disp.f_Hz
 
-def multisine_bla(records: list[dict], excited_bins: np.ndarray, detection_bins: np.ndarray, period_s: float, periods: int, drop_periods: int = 1) -> BlaEstimate:
-    """BLA over realisations (each a dict of v, i, d arrays with the same period), dropping transient periods.
+    @property
+    def even_f_Hz(self) -> np.ndarray:
+        return self.even_disp.f_Hz
 
-    Per realisation r and period p: Y_rp(k)/U_rp(k). The noise variance comes from the scatter over
-    periods, the total from the scatter over realisations; their difference is the nonlinear distortion.
+
+def multisine_bla(
+    records: list[dict],
+    excited_bins: np.ndarray,
+    detection_bins: np.ndarray | None,
+    period_s: float,
+    periods: int,
+    drop_periods: int = 1,
+    *,
+    fs: float | None = None,
+    lead_in: int = 0,
+    transient: bool = True,
+    other_bins: np.ndarray | None = None,
+    smooth_bins: int = 4,
+    smooth_lines: int = 2,
+) -> BlaEstimate:
+    """BLA over realisations (dicts of ``v``, ``i``, ``d`` sample arrays, optional ``t0`` in s) of one design.
+
+    Record layout: ``lead_in`` samples, then ``periods`` periods of n = period_s fs samples (n = len / periods
+    when ``fs`` is not given), of which the first ``drop_periods`` are transient. ``other_bins``: lines
+    excited in some realisations only (left out of everything). With ``transient`` the slow
+    tails are removed first (``remove_transient``). Per realisation r, with period spectra U_p, Y_p:
+
+        G_r(k) = mean_p Y_p(k) / mean_p U_p(k)        (averaging spectra first: no bias from input noise)
+        s_YY(k) = var_p Y_p(k) / P                    (noise of the period mean; smoothed over +-smooth_bins)
+        var G_r = |G_r|^2 (s_YY/|Y|^2 + s_UU/|U|^2 - 2 Re(s_YU/(Y U*)))
+
+    Over R realisations: G = mean_r G_r, noise var = mean_r var G_r / R, total var = var_r G_r / R (noise
+    plus the stochastic nonlinear distortion, which changes with the random phases; the ratio total/noise is
+    smoothed over +-smooth_lines excited lines since one line has only R - 1 degrees of freedom). With one
+    realisation the total is the noise variance: the nonlinear part is then unknown, but the unexcited lines
+    still show it. With one period the noise comes from the unexcited bins around each line.
     """
-    G_d, G_i, var_n, Yd_spec, Ud_excited = [], [], [], [], []
-    for rec in records:
-        n = int(round(len(rec["v"]) // periods))
-        use = range(drop_periods, periods)
-        V = np.array([np.fft.rfft(rec["v"][p * n : (p + 1) * n]) for p in use])
-        D = np.array([np.fft.rfft(rec["d"][p * n : (p + 1) * n]) for p in use])
-        I = np.array([np.fft.rfft(rec["i"][p * n : (p + 1) * n]) for p in use])
-        Vm, Dm, Im = V.mean(0), D.mean(0), I.mean(0)
-        G_d.append(Dm[excited_bins] / Vm[excited_bins])
-        G_i.append(Im[excited_bins] / Vm[excited_bins])
-        P = len(use)
-        var_n.append(np.var(D[:, excited_bins] / V[:, excited_bins], axis=0, ddof=1) / P if P > 1 else np.full(excited_bins.size, np.nan))
-        Yd_spec.append(np.abs(Dm) ** 2)
-        Ud_excited.append(np.mean(np.abs(Dm[excited_bins]) ** 2))
-    G_d, G_i = np.array(G_d), np.array(G_i)
+    ex = np.unique(np.asarray(excited_bins, int))
+    n = int(round(period_s * fs)) if fs else int((len(records[0]["v"]) - lead_in) // periods)
+    fs = float(fs) if fs else n / period_s
+    P = periods - drop_periods
+    if P < 1 or n < 4 or not records:
+        raise ValueError("a multisine BLA needs at least one period after the transient")
+    top = min(n // 2, int(ex.max()) + 2)
+    odd, even, is_odd = classify_lines(ex, top, detection_bins, other_bins)
+    start = lead_in + drop_periods * n
     R = len(records)
-    total = np.var(G_d, axis=0, ddof=1) / R if R > 1 else np.full(excited_bins.size, np.nan)
-    noise = np.mean(var_n, axis=0) / R
-    spec = np.mean(Yd_spec, axis=0)
-    ref = float(np.mean(Ud_excited))
-    n_bins = spec.size
-    even = np.arange(2, min(int(excited_bins.max()) + 2, n_bins), 2)
+    G = {"d": [], "i": []}
+    Gp = {"d": [], "i": []}
+    var = {"d": [], "i": []}
+    level = {"d": [], "i": []}
+    noise = {"d": [], "i": []}
+    t_rp = []
+    for rec in records:
+        sig = {}
+        for key in ("v", "i", "d"):
+            x = np.asarray(rec[key], float)[start : start + P * n]
+            if x.size < P * n:
+                raise ValueError(f"record too short: {x.size} samples for {P} periods of {n}")
+            if transient:  # time constants up to half the window: longer ones are confused with the lowest line
+                x = remove_transient(x, n, ex, fs, tuple(tau for tau in TRANSIENT_TAUS_S if tau <= P * period_s / 2))
+            sig[key] = _period_spectra(x, n, P)[:, : top + 1]
+        U = sig["v"]
+        Um = U.mean(0)
+        suu = _mean_noise(U, U, smooth_bins).real if P > 1 else _residual_noise(U.mean(0, keepdims=True), ex, smooth_bins)
+        for key in ("d", "i"):
+            Y = sig[key]
+            Ym = Y.mean(0)
+            if P > 1:
+                syy, syu = _mean_noise(Y, Y, smooth_bins).real, _mean_noise(Y, U, smooth_bins)
+            else:
+                syy, syu = _residual_noise(Y, ex, smooth_bins), np.zeros(top + 1, complex)
+            g = Ym[ex] / Um[ex]
+            G[key].append(g)
+            Gp[key].append(Y[:, ex] / U[:, ex])
+            var[key].append(_ratio_var(g, Ym[ex], Um[ex], syy[ex], suu[ex], syu[ex]))
+            level[key].append(np.abs(Ym) ** 2)
+            noise[key].append(syy if P > 1 else np.full(top + 1, np.nan))
+        t0 = float(rec.get("t0", 0.0))
+        t_rp.append(t0 + (start + (np.arange(P) + 0.5) * n) / fs)
+    out = {}
+    for key in ("d", "i"):
+        g = np.array(G[key])
+        nv = np.mean(var[key], axis=0) / R
+        if R > 1:
+            ratio = (np.var(g, axis=0, ddof=1) / R) / nv
+            tv = nv * _moving_mean(ratio, smooth_lines)
+        else:
+            tv = nv.copy()
+        lv, nz = np.mean(level[key], axis=0), np.mean(noise[key], axis=0)
+        levels = [LineLevels(b / period_s, lv[b], nz[b], R) for b in (odd, even)]
+        out[key] = (g.mean(0), nv, tv, levels, np.array(Gp[key]), np.array(var[key]) * P)
+    d, i = out["d"], out["i"]
     return BlaEstimate(
-        excited_bins / period_s,
-        G_d.mean(0),
-        G_i.mean(0),
-        noise,
-        total,
-        spec[detection_bins] / ref if detection_bins.size else np.zeros(0),
-        spec[even] / ref,
-        detection_bins / period_s,
-        even / period_s,
+        ex / period_s, d[0], i[0], d[1], d[2], i[1], i[2], d[3][0], d[3][1], i[3][0], i[3][1], R, P, is_odd,
+        d[4], i[4], d[5], i[5], np.array(t_rp),
     )
 
+
+def excited_bins_from_drive(v: np.ndarray, n_period: int, rel_level: float = 1e-3) -> np.ndarray:
+    """The bins (of an n_period-sample period) a periodic drive carries, read from its spectrum (DESIGN.md 6
+    imports): those whose power, averaged over the whole periods, exceeds ``1/rel_level`` times the median
+    bin power (the noise floor: most bins of a band-limited drive are empty)."""
+    P = max(len(v) // n_period, 1)
+    V = np.mean(np.abs(_period_spectra(v, n_period, P)) ** 2, axis=0)
+    V[0] = 0.0
+    floor = np.median(V[1:])
+    return np.flatnonzero(V > floor / rel_level) if floor > 0 else np.flatnonzero(V > 0)
+
+
+# ------------------------------------------------------------------------------------------- drift
+
+
+@dataclass(frozen=True)
+class DriftEstimate:
+    """A common relative drift of complex gains measured repeatedly (see ``gain_drift``)."""
+
+    rate_per_s: complex  # d ln G / dt: real part relative gain change per s, imaginary part phase change in rad/s
+    sigma_per_s: float  # std of each of the real and imaginary parts (inflated by the Birge ratio if > 1)
+    span_s: float  # from the first to the last repeat (of the line that spans longest)
+    repeats: int
+    lines: int
+    birge: float  # sqrt(chi^2 / dof) of the residuals about the common drift; 1 = scatter as the noise says
+
+    @property
+    def relative_change(self) -> complex:
+        """ln(G_last / G_first) over the span: real part relative gain change, imaginary part phase change (rad)."""
+        return self.rate_per_s * self.span_s
+
+    @property
+    def z(self) -> float:
+        return float(abs(self.rate_per_s) / self.sigma_per_s) if self.sigma_per_s > 0 else float("inf")
+
+    @property
+    def p_value(self) -> float:
+        """Chance of a drift this large without one: |rate|^2 / sigma^2 is chi^2 with 2 degrees of freedom."""
+        return float(np.exp(-0.5 * self.z**2))
+
+    def significant(self, p: float = 1e-3) -> bool:
+        return self.p_value < p
+
+
+def gain_drift(t_s: np.ndarray, G: np.ndarray, var_G: np.ndarray) -> DriftEstimate | None:
+    """Drift of gains ``G`` (M repeats x L lines, complex) measured at times ``t_s`` (M, or M x L) with
+    variances ``var_G`` (E|dG|^2): each gain relative to its line's weighted mean Gbar_l, then the weighted
+    least-squares fit with one intercept per line and one slope for all,
+
+        y_ml = G_ml / Gbar_l = c_l + beta t_ml + e_ml,   var e_ml = var_G / |Gbar_l|^2,   w = 1 / var e
+
+        beta = sum w (t - tbar_l)(y - ybar_l) / S,   S = sum w (t - tbar_l)^2,   var(Re beta) = var(Im beta) = 1 / (2 S)
+
+    (tbar_l, ybar_l weighted means per line). For small drifts beta = d ln G / dt; relative to the mean
+    rather than ln G so that noisy lines keep Gaussian errors. The scatter about the fit gives
+    chi^2 = 2 sum w |r|^2 with 2 (M L - L - 1) degrees of freedom; when the Birge ratio sqrt(chi^2/dof)
+    exceeds 1 (nonlinear distortion that changes between repeats, drift that differs between lines) the
+    uncertainty is scaled by it. Repeats can be records, periods of one record, or segments of a long record
+    (within-record drift). None when fewer than two repeats carry usable data.
+    """
+    G = np.atleast_2d(np.asarray(G, complex))
+    M, L = G.shape
+    t = np.broadcast_to(np.asarray(t_s, float).reshape(M, -1), (M, L))
+    v = np.broadcast_to(np.asarray(var_G, float).reshape(M, -1), (M, L))
+    ok = np.isfinite(G) & np.isfinite(v) & (v > 0) & np.isfinite(t)
+    ok &= ok.sum(0, keepdims=True) >= 2  # a line counts only with two repeats
+    keep = ok.any(0)
+    if not keep.any():
+        return None
+    ok, G, t, v = ok[:, keep], G[:, keep], t[:, keep], v[:, keep]
+    w0 = np.where(ok, 1.0 / np.where(ok, v, 1.0), 0.0)
+    Gbar = (w0 * np.where(ok, G, 0)).sum(0) / w0.sum(0)
+    w = w0 * np.abs(Gbar) ** 2
+    y = np.where(ok, G, 0) / np.where(Gbar != 0, Gbar, 1)
+    sw = w.sum(0)
+    tb, yb = (w * t).sum(0) / sw, (w * y).sum(0) / sw
+    dt, dy = np.where(ok, t - tb, 0.0), np.where(ok, y - yb, 0)
+    S = float(np.sum(w * dt**2))
+    if not S > 0:
+        return None
+    beta = complex(np.sum(w * dt * dy) / S)
+    chi2 = 2 * float(np.sum(w * np.abs(dy - beta * dt) ** 2))
+    dof = 2 * (int(ok.sum()) - ok.shape[1] - 1)
+    birge = float(np.sqrt(chi2 / dof)) if dof > 0 else 1.0
+    span = float(np.max(np.where(ok, t, -np.inf).max(0) - np.where(ok, t, np.inf).min(0)))  # longest line's span
+    return DriftEstimate(beta, float(np.sqrt(1 / (2 * S)) * max(birge, 1.0)), span, M, int(ok.shape[1]), birge)
+
+
+def sine_segment_gains(t: np.ndarray, v: np.ndarray, x: np.ndarray, f: float, skip_cycles: float = 0.0, segments: int = 3) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(segment mid-times, gains x/v at f, their variances) over ``segments`` equal runs of whole cycles after
+    ``skip_cycles``: the gain from the first part of a long sine record against the last (within-record drift).
+
+    Each segment is the least-squares fit of demodulate's model (sine at f, quadratic trend); the
+    variance of each amplitude comes from the residual, var(a) = sigma^2 [(A^T A)^-1]_cc + [..]_ss, and
+    var(G) = |G|^2 (var a_x / |a_x|^2 + var a_v / |a_v|^2)."""
+    t = np.asarray(t, float)
+    sl = _whole_cycles(t, f, skip_cycles, None)
+    fs = 1.0 / np.median(np.diff(t))
+    n_cyc = int(round((sl.stop - sl.start) * f / fs))
+    per = n_cyc // segments
+    if per < 1:
+        return np.zeros(0), np.zeros(0, complex), np.zeros(0)
+    n1 = int(round(per / f * fs))
+    tm, g, var = [], [], []
+    for s in range(segments):
+        seg = slice(sl.start + s * n1, sl.start + (s + 1) * n1)
+        (av, vv), (ax, vx) = (_amplitude_and_var(t[seg], np.asarray(y)[seg], f) for y in (v, x))
+        gs = ax / av
+        tm.append(float(np.mean(t[seg])))
+        g.append(gs)
+        var.append(abs(gs) ** 2 * (vx / abs(ax) ** 2 + vv / abs(av) ** 2))
+    return np.array(tm), np.array(g), np.array(var)
+
+
+def _amplitude_and_var(t: np.ndarray, x: np.ndarray, f: float, trend: int = 2) -> tuple[complex, float]:
+    """Complex amplitude at f (demodulate's model) and its variance from the least-squares residual."""
+    A = _design(t, f, 1, trend)
+    coef, res, *_ = np.linalg.lstsq(A, x, rcond=None)
+    dof = max(x.size - A.shape[1], 1)
+    s2 = float(res[0]) / dof if res.size else float(np.sum((x - A @ coef) ** 2)) / dof
+    cov = s2 * np.linalg.pinv(A.T @ A)
+    return complex(coef[-2] - 1j * coef[-1]), float(cov[-2, -2] + cov[-1, -1])
+
+
+def template_gains(records: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """(gains, variances) of repeated identical non-periodic records (e.g. steps): each record's least-squares
+    scale onto the mean of all, g_r = <x_r, m> / <m, m>, var g_r = sigma_r^2 / <m, m>, sigma_r^2 from the
+    sample-to-sample differences (white noise: var(diff) = 2 sigma^2; the signal is slow against the rate)."""
+    n = min(len(r) for r in records)
+    X = np.array([np.asarray(r, float)[:n] - np.asarray(r, float)[0] for r in records])
+    m = X.mean(0)
+    mm = float(m @ m)
+    if mm <= 0:
+        return np.full(len(X), np.nan), np.full(len(X), np.nan)
+    s2 = np.array([np.median(np.diff(x) ** 2) / (2 * 0.4549) for x in X])  # median of chi^2_1 is 0.4549
+    return X @ m / mm, s2 / mm
+
+
+# ------------------------------------------------------------------------------------------- load cell
+
+
+@dataclass(frozen=True)
+class ForceTrend:
+    mean_N: float
+    slope_N_per_s: float
+    slope_sigma_N_per_s: float  # from the scatter about the line, at least the indicator's q / sqrt(12)
+    samples: int
+
+
+def force_trend(t: np.ndarray, f: np.ndarray) -> ForceTrend:
+    """Mean and least-squares slope of the load-cell force during a record: slope = sum (t - tbar)(F - Fbar) /
+    sum (t - tbar)^2, sigma = s / sqrt(sum (t - tbar)^2) with s the residual std, never below the
+    resolution q of the indicator (its smallest step) over sqrt(12)."""
+    t, f = np.asarray(t, float), np.asarray(f, float)
+    ok = np.isfinite(t) & np.isfinite(f)
+    t, f = t[ok], f[ok]
+    if f.size == 0:
+        return ForceTrend(float("nan"), float("nan"), float("nan"), 0)
+    if f.size < 3 or np.ptp(t) <= 0:
+        return ForceTrend(float(np.mean(f)), float("nan"), float("nan"), int(f.size))
+    dt = t - t.mean()
+    stt = float(dt @ dt)
+    slope = float(dt @ (f - f.mean()) / stt)
+    r = f - f.mean() - slope * dt
+    steps = np.abs(np.diff(np.sort(f)))
+    q = float(np.min(steps[steps > 0])) if np.any(steps > 0) else 0.0
+    s = max(float(np.sqrt(r @ r / (f.size - 2))), q / np.sqrt(12.0))
+    return ForceTrend(float(np.mean(f)), slope, float(s / np.sqrt(stt)), int(f.size))
 
 @dataclass(frozen=True)
 class StepMetrics:

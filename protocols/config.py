@@ -74,10 +74,14 @@ class MultisineSettings(Strict):
     f_min_Hz: float = Field(0.1, gt=0)
     f_max_Hz: float = Field(20.0, gt=0)
     period_s: float = Field(20.0, gt=0)
-    periods: int = Field(3, ge=2)
+    periods: int = Field(3, ge=1)  # measured periods after the lead-in; with lead_in_s = 0 the first is a transient period
     realisations: int = Field(2, ge=1)
     fs_Hz: float = Field(200.0, gt=0)
     seed: int = 1
+    lead_in_s: float = Field(0.0, ge=0)  # cyclic prefix before the periods (the estimator removes the slow tails)
+    lines_per_octave: float | None = Field(None, gt=0)  # None: every odd line of the period grid
+    skip_one_in: int = Field(4, ge=1)  # one odd line in each group of this many is left out (odd-distortion detection)
+    emphasis_Hz: float | None = Field(None, gt=0)  # line amplitudes sqrt(1 + (f/emphasis_Hz)^2); None: flat
 
     @model_validator(mode="after")
     def _band(self):
@@ -85,6 +89,10 @@ class MultisineSettings(Strict):
             raise ValueError("fs_Hz must be at least 2.5 x f_max_Hz")
         if self.f_min_Hz * self.period_s < 1:
             raise ValueError("period_s is too short for f_min_Hz (need period_s >= 1/f_min_Hz)")
+        if self.lead_in_s >= self.period_s:
+            raise ValueError("lead_in_s must be shorter than period_s (use more periods instead)")
+        if self.lead_in_s == 0 and self.periods < 2:
+            raise ValueError("periods must be at least 2 without a lead-in (the first period is the transient)")
         return self
 
 

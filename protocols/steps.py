@@ -14,6 +14,7 @@ import numpy as np
 
 from labrig import signals
 from labrig.events import daq_stream, eis_stream, force_stream
+from protocols import multisine
 
 
 @dataclass(frozen=True)
@@ -110,16 +111,19 @@ def sine_record(prefix: str, kind: str, amplitude_V: float, frequency_Hz: float,
     return Step(f"{prefix}{kind}_{frequency_Hz:g}Hz_{amplitude_V:g}V", kind, Record(drive, fs_Hz), md)
 
 
-def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float, period_s: float, periods: int, fs_Hz: float, seed: int, realisation: int, **meta) -> Step:
-    rng = np.random.default_rng([seed, realisation])
-    ms = signals.odd_multisine(rms_V, f_min_Hz, f_max_Hz, period_s, fs_Hz, rng, lines_per_octave=None)
-    drive = np.append(ms.repeat(periods), 0.0)
+def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float, period_s: float, periods: int, fs_Hz: float, seed: int, realisation: int,
+                     *, lines_per_octave: float | None = None, skip_one_in: int = 4, emphasis_Hz: float | None = None, lead_in_s: float = 0.0, **meta) -> Step:
+    """One realisation of an odd random-phase multisine (protocols/multisine.py). Its metadata says what the
+    estimator needs: the period grid, the excited and left-out lines, and how the transient is handled
+    (``lead_in_s`` of cyclic prefix, or with no lead-in the first of ``periods`` is a transient period)."""
+    ms = multisine.design(rms_V, f_min_Hz, f_max_Hz, period_s, fs_Hz, seed, realisation, lines_per_octave, skip_one_in, emphasis_Hz)
     md = {
-        "rms_V": rms_V, "period_s": period_s, "periods": periods, "fs_Hz": fs_Hz, "realisation": realisation,
+        "rms_V": rms_V, "period_s": period_s, "periods": periods, "fs_Hz": fs_Hz, "realisation": realisation, "seed": seed,
         "f_min_Hz": f_min_Hz, "f_max_Hz": f_max_Hz, "excited_bins": ms.excited_bins.tolist(),
-        "detection_bins": ms.detection_bins.tolist(), **meta,
+        "detection_bins": ms.detection_bins.tolist(), "lead_in_s": lead_in_s, "transient_periods": 0 if lead_in_s > 0 else 1,
+        "emphasis_Hz": emphasis_Hz or 0.0, **meta,
     }
-    return Step(f"{prefix}multisine_r{realisation}", "multisine", Record(drive, fs_Hz), md)
+    return Step(f"{prefix}multisine_r{realisation}", "multisine", Record(multisine.drive(ms, periods, lead_in_s), fs_Hz), md)
 
 
 def log_freqs(f_start: float, f_stop: float, points: int) -> tuple[float, ...]:

@@ -1,11 +1,14 @@
 """What the fitter and the diagnosis need from a session, read only through the store's reader.
 
 Finished steps only; each record grouped by its clamping pressure. Bad data (NaN, too short) is left out
-with a note rather than crashing the fit.
+with a note rather than crashing the fit. Per pressure: the stepped-sine estimates, the multisine BLA,
+the FRF lines the fitter uses (``PressureData.frf_lines``) and the drift between and within records
+(docs/estimation.md).
 """
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -13,7 +16,19 @@ from typing import Any
 import numpy as np
 
 from labrig.errors import BadInput
-from labrig.estimate import SineEstimate, sine_estimate
+from labrig.estimate import (
+    BlaEstimate,
+    DriftEstimate,
+    ForceTrend,
+    SineEstimate,
+    excited_bins_from_drive,
+    force_trend,
+    gain_drift,
+    multisine_bla,
+    sine_estimate,
+    sine_segment_gains,
+    template_gains,
+)
 
 
 @dataclass
@@ -27,10 +42,17 @@ class TimeRecord:
     d: np.ndarray
     force_N: np.ndarray = field(default_factory=lambda: np.zeros(0))
     t_start: float = float("nan")  # rig clock at the step start (s)
+    force_t: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s from the step start, one per force_N
 
     @property
     def fs(self) -> float:
         return float(1.0 / np.median(np.diff(self.t)))
+
+    @property
+    def force_trend(self) -> ForceTrend:
+        """Load-cell force during the record: mean (N), slope (N/s) and the slope's standard deviation."""
+        t = self.force_t if self.force_t.size == self.force_N.size else np.linspace(0.0, float(np.ptp(self.t)), self.force_N.size)
+        return force_trend(t, self.force_N)
 
 
 @dataclass
@@ -39,9 +61,38 @@ class PressureData:
     eis: tuple[np.ndarray, np.ndarray] | None = None  # (f_Hz, Z complex)
     records: list[TimeRecord] = field(default_factory=list)
     sines: list[SineEstimate] = field(default_factory=list)  # stepped-sine estimates, ascending f
+    bla: BlaEstimate | None = None  # multisine BLA (the design with the most realisations x periods)
+    blas: list[BlaEstimate] = field(default_factory=list)  # every multisine design at this pressure (e.g. per amplitude)
+    # drift estimates by source: "multisine/realisations", "multisine/periods" (within records), "sine/within"
+    # (first vs second half of each sine record), "sine/repeats" and "step/repeats" (identical records repeated)
+    drift: dict[str, DriftEstimate] = field(default_factory=dict)
 
     def of_kind(self, kind: str) -> list[TimeRecord]:
         return [r for r in self.records if r.kind == kind]
+
+    def frf_lines(self, source: str = "all") -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
+        """The FRF points to fit: (f_Hz, H_disp in m/V, H_cur in A/V, sigma_disp in m/V), ascending f; None if none.
+
+        ``source``: "all" (stepped sines and the multisine BLA together), "sines" (the stepped sines, exactly
+        ``frf()``) or "multisine" (the BLA's excited lines). ``sigma_disp`` is the standard deviation of the
+        complex estimate, sqrt(E|H_hat - H|^2) (each of the real and imaginary parts has sigma/sqrt 2):
+        for a stepped sine the cycle-to-cycle scatter (as ``frf()``; it overstates the noise of the whole
+        record, see docs/estimation.md), for the BLA the total variance over realisations (noise plus the
+        stochastic nonlinear distortion; noise only with a single realisation).
+        """
+        if source not in ("all", "sines", "multisine"):
+            raise ValueError(f"source must be all, sines or multisine, not {source!r}")
+        parts = []
+        if source in ("all", "sines") and self.sines:
+            parts.append(self.frf())
+        if source in ("all", "multisine") and self.bla is not None:
+            b = self.bla
+            parts.append((b.f_Hz, b.G_disp, b.G_cur, np.sqrt(b.total_var_disp)))
+        if not parts:
+            return None
+        f, hd, hc, sd = (np.concatenate(c) for c in zip(*parts))
+        o = np.argsort(f, kind="stable")
+        return f[o], hd[o], hc[o], sd[o]
 
     def frf(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
         """(f, H_disp, H_cur, sigma_disp) from the stepped sines, or None."""
@@ -99,8 +150,8 @@ def load_session(path: str | Path) -> SessionData:
             if "daq" not in streams:
                 continue
             s = r.stream(st, "daq")
-            force = r.stream(st, "force")["force_N"] if "force" in streams else np.zeros(0)
-            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], s["i_A"], s["disp_m"], force, st.t_start)
+            fs_ = r.stream(st, "force") if "force" in streams else {"force_N": np.zeros(0), "t_s": np.zeros(0)}
+            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], s["i_A"], s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
@@ -113,4 +164,117 @@ def load_session(path: str | Path) -> SessionData:
                 bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(md["frequency_Hz"]), float(md.get("settle_cycles", 0.0)), float(md.get("cycles", 0)) or None))
     for b in by_p.values():
         b.sines.sort(key=lambda s: s.frequency_Hz)
+        _add_multisine(b, notes)
+        _add_drift(b)
     return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose)
+
+
+# ------------------------------------------------------------------------------------------ multisine
+
+
+def _design_key(r: TimeRecord) -> tuple:
+    """Realisations of one multisine design share this (imports: period, rate and amplitude)."""
+    m = r.meta
+    return tuple(m.get(k) for k in ("period_s", "rms_V", "amplitude_V", "seed", "lead_in_s", "periods", "series")) + (round(r.fs, 3),)
+
+
+def _multisine_layout(recs: list[TimeRecord]) -> dict[str, Any]:
+    """Period grid, excited lines and transient handling of one design: from the runner's metadata, or
+    for imported records (period_s only) from the drive's spectrum (DESIGN.md 6)."""
+    m, fs = recs[0].meta, recs[0].fs
+    period = float(m["period_s"])
+    if "excited_bins" in m:  # the runner's design (older sessions drew lines per realisation: keep the common ones)
+        each = [np.asarray(r.meta["excited_bins"], int) for r in recs]
+        ex, anyex = functools.reduce(np.intersect1d, each), np.unique(np.concatenate(each))
+        lead = int(round(float(m.get("lead_in_s", 0.0)) * fs))
+        return {"period": period, "fs": fs, "excited": ex, "other": np.setdiff1d(anyex, ex), "periods": int(m["periods"]),
+                "drop": int(m.get("transient_periods", 1)), "lead": lead}
+    n = period * fs
+    if abs(n - round(n)) > 0.02:
+        raise ValueError(f"period_s = {period:g} s is not a whole number of samples at {fs:g} Hz")
+    n = int(round(n))
+    each = [excited_bins_from_drive(r.v, n) for r in recs]
+    ex, anyex = functools.reduce(np.intersect1d, each), np.unique(np.concatenate(each))
+    if ex.size == 0:
+        raise ValueError("no excited lines in the drive's spectrum")
+    g = int(np.gcd.reduce(ex))  # every line a multiple of g: the drive repeats every period / g
+    periods = min(r.v.size for r in recs) // (n // g)
+    if periods < 1:
+        raise ValueError(f"record shorter than one period ({period:g} s)")
+    return {"period": period / g, "fs": fs, "excited": ex // g, "other": np.setdiff1d(anyex, ex) // g, "periods": periods,
+            "drop": 1 if periods >= 3 else 0, "lead": 0}
+
+
+def _add_multisine(b: PressureData, notes: list[str]) -> None:
+    groups: dict[tuple, list[TimeRecord]] = {}
+    for r in b.of_kind("multisine"):
+        groups.setdefault(_design_key(r), []).append(r)
+    for recs in groups.values():
+        try:
+            lay = _multisine_layout(recs)
+            data = [{"v": r.v, "i": r.i, "d": r.d, "t0": r.t_start} for r in recs]
+            b.blas.append(multisine_bla(data, lay["excited"], None, lay["period"], lay["periods"], lay["drop"], fs=lay["fs"], lead_in=lay["lead"], other_bins=lay["other"]))
+        except (ValueError, KeyError, IndexError) as exc:
+            notes.append(f"multisine {recs[0].name} at {b.pressure_kPa:g} kPa: no BLA ({exc})")
+    if b.blas:
+        b.bla = max(b.blas, key=lambda e: e.realisations * e.periods)
+
+
+# ------------------------------------------------------------------------------------------ drift
+
+
+def _stack(columns: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(t, G, var) columns of unequal length as M x L arrays, NaN where a column has no entry."""
+    M = max(len(c[0]) for c in columns)
+    out = [np.full((M, len(columns)), np.nan, dtype=d) for d in (float, complex, float)]
+    for j, col in enumerate(columns):
+        for a, c in zip(out, col):
+            a[: len(c), j] = c
+    return out[0], out[1], out[2]
+
+
+def _sine_skip(r: TimeRecord) -> float:
+    """Cycles to skip: the stepped sine's settling cycles, one cycle of a harmonic record."""
+    return float(r.meta.get("settle_cycles", 0.0)) or (1.0 if r.kind == "harmonic" else 0.0)
+
+
+def _add_drift(b: PressureData) -> None:
+    """Drift of the gains at this pressure, from every source the records allow (see PressureData.drift)."""
+    est: dict[str, DriftEstimate | None] = {}
+    if b.bla is not None:
+        e = b.bla
+        R, P, L = e.G_disp_rp.shape
+        if R > 1:  # realisation means against record time (nonlinear scatter is absorbed by the Birge ratio)
+            est["multisine/realisations"] = gain_drift(e.t_rp.mean(1), e.G_disp_rp.mean(1), e.var_disp_p / P)
+        if P > 1:  # periods within each record: same phases, so the same distortion: noise only
+            t = np.repeat(e.t_rp[:, :, None], L, axis=2).transpose(1, 0, 2).reshape(P, R * L)
+            var = np.broadcast_to(e.var_disp_p[None], (P, R, L)).reshape(P, R * L)
+            est["multisine/periods"] = gain_drift(t, e.G_disp_rp.transpose(1, 0, 2).reshape(P, R * L), var)
+    sines = [r for r in b.records if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta]
+    within, repeats = [], {}
+    for r in sines:
+        f = float(r.meta["frequency_Hz"])
+        tm, g, var = sine_segment_gains(r.t, r.v, r.d, f, _sine_skip(r), segments=2)
+        if g.size == 2:
+            within.append((r.t_start + tm, g, var))
+        repeats.setdefault((r.kind, f, r.meta.get("amplitude_V")), []).append(r)
+    if within:
+        est["sine/within"] = gain_drift(*_stack(within))
+    cols = []
+    for recs in repeats.values():
+        if len(recs) > 1:
+            per = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), _sine_skip(r), segments=1) for r in recs]
+            cols.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm, g, var) for r, (tm, g, var) in zip(recs, per)])))
+    if cols:
+        est["sine/repeats"] = gain_drift(*_stack(cols))
+    steps: dict[tuple, list[TimeRecord]] = {}
+    for r in b.of_kind("step"):
+        steps.setdefault(tuple(r.meta.get(k) for k in ("amplitude_V", "on_s", "off_s", "pre_s")), []).append(r)
+    cols = []
+    for recs in steps.values():
+        if len(recs) > 1:
+            g, var = template_gains([r.d for r in recs])
+            cols.append((np.array([r.t_start + np.mean(r.t) - r.t[0] for r in recs]), g.astype(complex), var))
+    if cols:
+        est["step/repeats"] = gain_drift(*_stack(cols))
+    b.drift = {k: v for k, v in est.items() if v is not None}
