@@ -78,6 +78,9 @@ def _diagnosis(data: ReportData, recompute: bool) -> None:
     from labrig.diagnose.residuals import heldout_residuals
 
     data.feats = extract(data.sd)
+    if not data.fit.specimens:
+        data.missing["diagnosis"] = "No record at a clamping pressure: the model the diagnosis starts from cannot be set up."
+        return
     if not _has_time_records(data.feats):
         data.missing["diagnosis"] = ("No sine or step records: the diagnosis compares the model with time "
                                      "records, and this session has none.")

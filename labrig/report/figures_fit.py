@@ -62,37 +62,38 @@ def _bode_figure(title: str, mag_label: str) -> tuple[Figure, Any]:
     return fig, axes
 
 
-def impedance_figure(sd: Any, specimens: dict) -> Figure | None:
-    """|Z| and phase per clamping pressure: measured spectrum against the fitted eq. 12."""
-    with_eis = [d for d in sd.pressures if d.eis is not None]
-    if not with_eis:
+def _bode_per_pressure(sd: Any, specimens: dict, title: str, mag_label: str, scale: float,
+                       measured: Callable[[Any], tuple | None], model: Callable[[np.ndarray, Any], np.ndarray]) -> Figure | None:
+    """One Bode figure, a colour per pressure: ``measured(d)`` gives (f, complex values, error or None) or
+    None for a pressure without the data; ``model(f, specimen)`` the fitted curve."""
+    data = [(d.pressure_kPa, m) for d in sd.pressures if (m := measured(d)) is not None]
+    if not data:
         return None
     ps = [d.pressure_kPa for d in sd.pressures]
-    fig, axes = _bode_figure("Impedance: measured against fitted model (eq. 12)", "|Z| (ohm)")
-    for d in with_eis:
-        f, z = d.eis
-        sp = specimens[d.pressure_kPa]
-        f_dense = np.geomspace(f.min(), f.max(), 300)
-        _bode(axes, f, z, f_dense, lambda x, sp=sp: imp.impedance(2j * np.pi * x, sp), colour(d.pressure_kPa, ps), f"{d.pressure_kPa:g} kPa", 1.0)
+    fig, axes = _bode_figure(title, mag_label)
+    for p, (f, meas, err) in data:
+        sp = specimens[p]
+        _bode(axes, f, meas, np.geomspace(f.min(), f.max(), 300), lambda x, sp=sp: model(x, sp), colour(p, ps), f"{p:g} kPa", scale, err)
     _style_legend(axes[0])
     return fig
+
+
+def impedance_figure(sd: Any, specimens: dict) -> Figure | None:
+    """|Z| and phase per clamping pressure: measured spectrum against the fitted eq. 12."""
+    return _bode_per_pressure(sd, specimens, "Impedance: measured against fitted model (eq. 12)", "|Z| (ohm)", 1.0,
+                              lambda d: None if d.eis is None else (*d.eis, None),
+                              lambda f, sp: imp.impedance(2j * np.pi * f, sp))
+
+
+def _frf_points(d: Any) -> tuple | None:
+    frf = d.frf()
+    return None if frf is None else (frf[0], frf[1], np.nan_to_num(frf[3], nan=0.0))
 
 
 def frf_figure(sd: Any, specimens: dict) -> Figure | None:
     """Displacement per volt, gain and phase per pressure: stepped sines (with their noise) against the fit."""
-    with_frf = [d for d in sd.pressures if d.frf() is not None]
-    if not with_frf:
-        return None
-    ps = [d.pressure_kPa for d in sd.pressures]
-    fig, axes = _bode_figure("Displacement FRF: measured against fitted model (eq. 38)", "gain (mm/V)")
-    for d in with_frf:
-        f, h, _, sig = d.frf()
-        sp = specimens[d.pressure_kPa]
-        f_dense = np.geomspace(f.min(), f.max(), 300)
-        _bode(axes, f, h, f_dense, lambda x, sp=sp: transfer.frf(x, sp), colour(d.pressure_kPa, ps), f"{d.pressure_kPa:g} kPa", 1e3,
-              err=np.nan_to_num(sig, nan=0.0))
-    _style_legend(axes[0])
-    return fig
+    return _bode_per_pressure(sd, specimens, "Displacement FRF: measured against fitted model (eq. 38)", "gain (mm/V)", 1e3,
+                              _frf_points, transfer.frf)
 
 
 PARAM_PANELS = (("R_cont_ohm", "contact resistance R_cont (ohm)"), ("Kt_bar", "clamp stiffness K_t bar (-)"), ("f1_Hz", "first natural frequency f1 (Hz)"))
@@ -154,13 +155,14 @@ def _time_legend(ax: Any) -> None:
 
 def step_figure(feats: Any, specimens: dict, pressures: list[float]) -> Figure | None:
     """The first step of each pressure (from rest) against the fitted model's prediction."""
-    from labrig.diagnose.features import predict_step, specimen_for
+    from labrig.diagnose.features import predict_step
 
-    if feats is None or not feats.steps:
+    steps = [st for st in (feats.steps if feats is not None else []) if st.pressure_kPa in specimens]
+    if not steps:
         return None
     fig, axes = _time_panels("Step response: measured against model prediction")
-    for st in feats.steps:
-        d, i = predict_step(specimen_for(specimens, st.pressure_kPa), st)
+    for st in steps:
+        d, i = predict_step(specimens[st.pressure_kPa], st)
         label = "no pressure" if st.pressure_kPa is None else f"{st.pressure_kPa:g} kPa"
         _plot_pair(axes, st.t - st.t[0], (st.d - st.d[0], st.i), (d - d[0], i), colour(st.pressure_kPa, pressures), label)
     _time_legend(axes[0])

@@ -99,7 +99,7 @@ def _figures(data: ReportData) -> str:
     out += "<h3>Step response</h3>" + _fig_or_missing(
         ff.step_figure(data.feats, sp, pressures), "step",
         "First step of each pressure (from rest), measured (solid) against the model (dashed); bottom: the displacement misfit." + mech,
-        "No step records in this session.")
+        "No step records at a clamping pressure in this session.")
     out += "<h3>Harmonic response</h3>" + _fig_or_missing(
         ff.harmonic_figure(sd, sp), "harmonic",
         "Harmonic record of each pressure against the model driven by the recorded voltage from rest; a slow drift in "
