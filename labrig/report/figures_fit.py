@@ -26,11 +26,11 @@ def colour(p: float | None, pressures: list[float]) -> str:
     return f"C{k % 10}"
 
 
-def _style_legend(ax: Any) -> None:
+def _style_legend(ax: Any, model_label: str = "model (fitted)") -> None:
     """Pressure colours plus 'markers measured, lines model' in one legend."""
     handles, labels = ax.get_legend_handles_labels()
     proxies = [Line2D([], [], color="0.3", **MEASURED), Line2D([], [], color="0.3", **MODEL)]
-    ax.legend(handles + proxies, labels + ["measured", "model (fitted)"], fontsize=8, ncol=2)
+    ax.legend(handles + proxies, labels + ["measured", model_label], fontsize=8, ncol=2)
 
 
 def _bode(axes: Any, f: np.ndarray, meas: np.ndarray, f_dense: np.ndarray, model: Callable[[np.ndarray], np.ndarray],
@@ -63,7 +63,8 @@ def _bode_figure(title: str, mag_label: str) -> tuple[Figure, Any]:
 
 
 def _bode_per_pressure(sd: Any, specimens: dict, title: str, mag_label: str, scale: float,
-                       measured: Callable[[Any], tuple | None], model: Callable[[np.ndarray, Any], np.ndarray]) -> Figure | None:
+                       measured: Callable[[Any], tuple | None], model: Callable[[np.ndarray, Any], np.ndarray],
+                       model_label: str = "model (fitted)") -> Figure | None:
     """One Bode figure, a colour per pressure: ``measured(d)`` gives (f, complex values, error or None) or
     None for a pressure without the data; ``model(f, specimen)`` the fitted curve."""
     data = [(d.pressure_kPa, m) for d in sd.pressures if (m := measured(d)) is not None]
@@ -74,7 +75,7 @@ def _bode_per_pressure(sd: Any, specimens: dict, title: str, mag_label: str, sca
     for p, (f, meas, err) in data:
         sp = specimens[p]
         _bode(axes, f, meas, np.geomspace(f.min(), f.max(), 300), lambda x, sp=sp: model(x, sp), colour(p, ps), f"{p:g} kPa", scale, err)
-    _style_legend(axes[0])
+    _style_legend(axes[0], model_label)
     return fig
 
 
@@ -86,14 +87,17 @@ def impedance_figure(sd: Any, specimens: dict) -> Figure | None:
 
 
 def _frf_points(d: Any) -> tuple | None:
-    frf = d.frf()
+    """What the fitter fits: the stepped sines and, where recorded, the multisine BLA's excited lines."""
+    frf = d.frf_lines("all")
     return None if frf is None else (frf[0], frf[1], np.nan_to_num(frf[3], nan=0.0))
 
 
-def frf_figure(sd: Any, specimens: dict) -> Figure | None:
-    """Displacement per volt, gain and phase per pressure: stepped sines (with their noise) against the fit."""
-    return _bode_per_pressure(sd, specimens, "Displacement FRF: measured against fitted model (eq. 38)", "gain (mm/V)", 1e3,
-                              _frf_points, transfer.frf)
+def frf_figure(sd: Any, specimens: dict, fitted: bool = True) -> Figure | None:
+    """Displacement per volt, gain and phase per pressure: measured points (with their noise) against the model,
+    fitted or (``fitted`` False: the fit could not tell the mechanics) the preset's."""
+    title = "Displacement FRF: measured against " + ("fitted model (eq. 38)" if fitted else "the preset's model (eq. 38)")
+    return _bode_per_pressure(sd, specimens, title, "gain (mm/V)", 1e3, _frf_points, transfer.frf,
+                              "model (fitted)" if fitted else "model (preset mechanics)")
 
 
 PARAM_PANELS = (("R_cont_ohm", "contact resistance R_cont (ohm)"), ("Kt_bar", "clamp stiffness K_t bar (-)"), ("f1_Hz", "first natural frequency f1 (Hz)"))

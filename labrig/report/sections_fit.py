@@ -82,20 +82,21 @@ def _fig_or_missing(fig: Any, name: str, caption: str, missing: str) -> str:
 def _figures(data: ReportData) -> str:
     sd, sp, fj = data.sd, data.fit.specimens, data.fit_json
     pressures = [d.pressure_kPa for d in sd.pressures]
+    fitted = any(r.get("Kt_bar") is not None for r in fj["per_pressure"])
+    mech = "" if fitted else " The mechanics were not fitted: the model curves use the preset's values."
     out = "<h3>Impedance spectra</h3>" + _fig_or_missing(
         ff.impedance_figure(sd, sp), "impedance",
         "Bode plot of the impedance per clamping pressure: markers measured, lines the fitted eq. 12 (global fit).",
         "No impedance spectrum in this session: the contact resistance and Table 1 values cannot be told.")
     out += "<h3>Displacement FRF</h3>" + _fig_or_missing(
-        ff.frf_figure(sd, sp), "frf",
-        "Tip displacement per volt from the stepped sines (error bars: cycle-to-cycle scatter) against the fitted model.",
-        "No stepped-sine records: there is no displacement FRF to compare the model with.")
+        ff.frf_figure(sd, sp, fitted), "frf",
+        "Tip displacement per volt from the stepped sines and any multisine (best linear approximation), error bars "
+        "1 standard deviation of each estimate, against the model." + mech,
+        "No stepped-sine or multisine records: there is no displacement FRF to compare the model with.")
     out += "<h3>Clamp values against clamping pressure</h3>" + _fig_or_missing(
         ff.parameters_figure(fj), "parameters",
         "Contact resistance R_cont, clamp stiffness K_t bar and first natural frequency f1 per pressure, with 1 standard error.",
         "The fit could tell none of R_cont, K_t bar and f1 from this session (the notes under Fitted values say why).")
-    mech = "" if any(r.get("Kt_bar") is not None for r in fj["per_pressure"]) else (
-        " The mechanics were not fitted (no FRF): the model curves use the preset's values.")
     out += "<h3>Step response</h3>" + _fig_or_missing(
         ff.step_figure(data.feats, sp, pressures), "step",
         "First step of each pressure (from rest), measured (solid) against the model (dashed); bottom: the displacement misfit." + mech,
