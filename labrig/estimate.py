@@ -120,6 +120,12 @@ def classify_lines(excited_bins: np.ndarray, top_bin: int, detection_bins: np.nd
     return free[free % 2 == 1], free[free % 2 == 0], True
 
 
+def _transient_basis(N: int, fs: float, taus_s: tuple[float, ...], degree: int) -> np.ndarray:
+    """Columns t^j (j <= degree, t scaled to [0, 1]) and exp(-t / tau_m), t from the window start."""
+    t = np.arange(N) / fs
+    return np.stack([(t / max(t[-1], 1e-12)) ** j for j in range(degree + 1)] + [np.exp(-t / tau) for tau in taus_s], axis=1)
+
+
 def remove_transient(x: np.ndarray, n_period: int, excited_bins: np.ndarray, fs: float, taus_s: tuple[float, ...] = TRANSIENT_TAUS_S, degree: int = 1) -> np.ndarray:
     """``x`` (whole periods of ``n_period`` samples) minus the transient of the least-squares fit
 
@@ -134,10 +140,8 @@ def remove_transient(x: np.ndarray, n_period: int, excited_bins: np.ndarray, fs:
     """
     x = np.asarray(x, float)
     N = x.size
-    P = N // n_period
-    t = np.arange(N) / fs
-    B = np.stack([(t / max(t[-1], 1e-12)) ** j for j in range(degree + 1)] + [np.exp(-t / tau) for tau in taus_s], axis=1)
-    bins = np.asarray(excited_bins, int) * P
+    B = _transient_basis(N, fs, taus_s, degree)
+    bins = np.asarray(excited_bins, int) * (N // n_period)
 
     def off_lines(y: np.ndarray) -> np.ndarray:
         Y = np.fft.rfft(y, axis=0)
@@ -147,6 +151,22 @@ def remove_transient(x: np.ndarray, n_period: int, excited_bins: np.ndarray, fs:
 
     c = np.linalg.lstsq(off_lines(B), off_lines(x), rcond=None)[0]
     return x - B @ c
+
+
+def transient_inflation(N: int, n_period: int, excited_bins: np.ndarray, fs: float, taus_s: tuple[float, ...] = TRANSIENT_TAUS_S, degree: int = 1) -> np.ndarray:
+    """Noise-variance factor kappa_k >= 1 of each excited line's amplitude from fitting the transient too.
+
+    With Q an orthonormal basis of the transient columns and S the cos/sin columns of the lines (S^T S =
+    N/2 I), the lines' covariance is sigma^2 (S^T S - S^T Q Q^T S)^-1 against sigma^2 (2/N) I without the
+    transient, so kappa_k = (N/2) mean of the cos and sin diagonal entries of (N/2 I - (S^T Q)(S^T Q)^T)^-1.
+    Large only for lines with few cycles in the window (the slow tails look like them)."""
+    bins = np.asarray(excited_bins, int) * (N // n_period)
+    Q = np.linalg.qr(_transient_basis(N, fs, taus_s, degree))[0]
+    F = np.fft.rfft(Q, axis=0)[bins]  # sum_t cos(w t) q(t) = Re F, sum_t sin(w t) q(t) = -Im F
+    SQ = np.concatenate([F.real, -F.imag])
+    M = (N / 2) * np.eye(SQ.shape[0]) - SQ @ SQ.T
+    d = np.diag(np.linalg.inv(M)) * (N / 2)
+    return np.maximum(0.5 * (d[: bins.size] + d[bins.size :]), 1.0)
 
 
 def _period_spectra(x: np.ndarray, n: int, P: int) -> np.ndarray:
@@ -292,14 +312,16 @@ def multisine_bla(
     level = {"d": [], "i": []}
     noise = {"d": [], "i": []}
     t_rp = []
+    taus = tuple(tau for tau in TRANSIENT_TAUS_S if tau <= 0.75 * P * period_s)  # longer ones look like the lowest line
+    kappa = transient_inflation(P * n, n, ex, fs, taus) if transient else np.ones(ex.size)
     for rec in records:
         sig = {}
         for key in ("v", "i", "d"):
             x = np.asarray(rec[key], float)[start : start + P * n]
             if x.size < P * n:
                 raise ValueError(f"record too short: {x.size} samples for {P} periods of {n}")
-            if transient:  # time constants up to half the window: longer ones are confused with the lowest line
-                x = remove_transient(x, n, ex, fs, tuple(tau for tau in TRANSIENT_TAUS_S if tau <= P * period_s / 2))
+            if transient:
+                x = remove_transient(x, n, ex, fs, taus)
             sig[key] = _period_spectra(x, n, P)[:, : top + 1]
         U = sig["v"]
         Um = U.mean(0)
@@ -314,7 +336,7 @@ def multisine_bla(
             g = Ym[ex] / Um[ex]
             G[key].append(g)
             Gp[key].append(Y[:, ex] / U[:, ex])
-            var[key].append(_ratio_var(g, Ym[ex], Um[ex], syy[ex], suu[ex], syu[ex]))
+            var[key].append(kappa * _ratio_var(g, Ym[ex], Um[ex], syy[ex], suu[ex], syu[ex]))
             level[key].append(np.abs(Ym) ** 2)
             noise[key].append(syy if P > 1 else np.full(top + 1, np.nan))
         t0 = float(rec.get("t0", 0.0))

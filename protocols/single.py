@@ -43,8 +43,8 @@ def stepped_sine_steps(s: SteppedSineSettings, prefix: str = "", **meta) -> Iter
 
 def multisine_steps(s: MultisineSettings, prefix: str = "", **meta) -> Iterator[Step]:
     for r in range(s.realisations):
-        yield multisine_record(prefix, s.rms_V, s.f_min_Hz, s.f_max_Hz, s.period_s, s.periods, s.fs_Hz, s.seed, r, lines_per_octave=s.lines_per_octave,
-                               skip_one_in=s.skip_one_in, emphasis_Hz=s.emphasis_Hz, lead_in_s=s.lead_in_s, **meta)
+        yield multisine_record(prefix, s.rms_V, s.f_min_Hz, s.f_max_Hz, s.period_s, s.periods, s.fs_Hz, s.seed, r, lines_per_octave=s.lines_per_octave or None,
+                               skip_one_in=s.skip_one_in, emphasis_Hz=s.emphasis_Hz or None, lead_in_s=s.lead_in_s, **meta)
 
 
 def amplitude_series_steps(s: AmplitudeSeriesSettings, prefix: str = "", **meta) -> Iterator[Step]:
