@@ -1,7 +1,15 @@
-"""Seed 000 fit: clamp-area electrical values (Table 1) from the impedance spectra, with the free line's
-values shared across pressures in one global fit; K_t bar per pressure, alpha and gamma from the
-displacement FRF (Tables 2 and 3); the optimum clamping pressure. lmfit, with uncertainties from the
-covariance of the least-squares fit (scaled by the reduced chi-square).
+"""Seed 000 fit: clamp-area electrical values (Table 1) and the free line's values (shared across
+pressures), K_t bar per pressure, alpha and gamma (Tables 2 and 3), the optimum clamping pressure.
+
+Three stages, each an lmfit least-squares fit (labrig.fit.seed000_problem): the impedance spectra alone
+(R_cont held at the paper's value: the spectrum cannot tell it, docs/model.md 9), the displacement FRF
+with the electrical values held, then both together with R_cont free. The FRF tells R_cont through the
+voltage divider v(0)/V0 = 1 - Z1/Z(f) (eq. 5-6, 12). Residuals are in units of their noise (the analyser's
+relative noise, estimated from the spectrum fit; each FRF point's standard deviation, floored), so the
+covariance is used as it is, inflated by the reduced chi-square only when the fit is worse than the noise.
+Every reported parameter carries a status: ``fitted``, ``fixed`` (at a documented value, not told by the
+data) or ``undetermined`` (its 1-sigma interval is wider than itself, or it sits at a bound): an
+undetermined contact resistance is reported as null.
 """
 
 from __future__ import annotations
@@ -16,38 +24,51 @@ import lmfit
 import numpy as np
 
 from labrig.estimate import step_metrics
+from labrig.fit import seed000_problem as sp000
+from labrig.fit.seed000_problem import LINE_NAMES, Problem, clamp_name, tag
 from labrig.fit.session_data import PressureData, SessionData
-from labrig.physics import impedance as imp
 from labrig.physics import presets, transfer
-from labrig.physics.params import ClampElectrical, Fluid, Geometry, LineElectrical, Specimen, WATER_25C, AIR_25C
+from labrig.physics.clamp import ClampLaw
+from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen
 
-LINE_KEYS = ("R", "R_p", "Q0", "n")
-CLAMP_KEYS = ("r_cont", "R_c", "R_pc", "Q0c", "n_c")
-FIT_MODES = 4  # the FRF runs to 20 Hz; mode 2 is near 24 Hz, mode 4 above 100 Hz
+REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
 
 
 def base_specimen(sample: dict[str, Any]) -> Specimen:
-    """The prior specimen: the session's preset, or the paper's material in the imported geometry."""
+    """The prior specimen: the session's preset, or the paper's material in the imported geometry.
+
+    It keeps the preset's number of modes (10), the model the simulated bench runs: with 4 modes the
+    FRF's shape is 0.5 % low below 1 Hz, which the joint fit turned into +0.2 ohm of R_cont and +1.5 % of alpha."""
     name = sample.get("preset")
     if name in presets.names():
-        return presets.get(name).base.with_(n_modes=FIT_MODES)
+        return presets.get(name).base
     sp = presets.get("paper").base
     w = float(sample.get("width_m", sp.geometry.width))
     area = float(sample.get("clamp_area_m2", sp.geometry.clamp_area))
     geom = Geometry(float(sample.get("length_m", sp.geometry.length)), w, float(sample.get("thickness_m", sp.geometry.thickness)), area / w, w)
     fluid: Fluid = AIR_25C if str(sample.get("medium", "water")) == "air" else WATER_25C
     mech = sp.mechanics if fluid is WATER_25C else dataclasses.replace(sp.mechanics, mu_v=None, density=2000.0)
-    return sp.with_(geometry=geom, fluid=fluid, mechanics=mech, n_modes=FIT_MODES)
+    return sp.with_(geometry=geom, fluid=fluid, mechanics=mech)
 
 
-def _tag(p: float) -> str:
-    return f"p{p:g}".replace(".", "_")
+def prior_specimens(sample: dict[str, Any], pressures: list[float]) -> dict[float, Specimen]:
+    """The paper's strip at each pressure: clamp-area values and K_t bar from the clamp law (Tables 1-2).
+    They are the start values, and the values of what the data cannot tell (R_sc, R_pc)."""
+    base = base_specimen(sample)
+    name = sample.get("preset")
+    law: ClampLaw = presets.get(name if name in presets.names() else "paper").clamp_law
+    return {p: base.with_(clamp=law.clamp_at(p * 1e3), Kt_bar=law.kt_bar_at(p * 1e3), pressure=p * 1e3) for p in pressures}
 
 
 @dataclass
 class ParamEstimate:
     value: float
     stderr: float = float("nan")
+    status: str = "fitted"  # fitted | fixed | undetermined
+
+    def as_json(self) -> dict[str, Any]:
+        err = self.stderr if self.status != "fixed" and math.isfinite(self.stderr) else None
+        return {"value": self.value, "stderr": err, "status": self.status}
 
 
 @dataclass
@@ -61,6 +82,8 @@ class Seed000Fit:
     notes: list[str] = field(default_factory=list)
     eis_redchi: float | None = None
     frf_redchi: float | None = None
+    eis_noise_rel: float | None = None  # the analyser's relative noise per component, from the spectra
+    frf_excess_rel: float | None = None  # relative FRF error beyond the points' noise, from the FRF
     elapsed_s: float = 0.0
     specimens: dict[float, Specimen] = field(default_factory=dict)  # the fitted strip per pressure
 
@@ -76,120 +99,69 @@ class Seed000Fit:
             "alpha_stderr": None if self.alpha is None else self.alpha.stderr,
             "gamma": pe(self.gamma),
             "gamma_stderr": None if self.gamma is None else self.gamma.stderr,
-            "line": {k: {"value": v.value, "stderr": v.stderr} for k, v in self.line.items()},
+            "line": {k: v.as_json() for k, v in self.line.items()},
             "eis_redchi": self.eis_redchi,
             "frf_redchi": self.frf_redchi,
+            "eis_noise_rel": self.eis_noise_rel,
+            "frf_excess_rel": self.frf_excess_rel,
             "notes": self.notes,
         }
 
 
-# ------------------------------------------------------------------------------------- impedance
+# ------------------------------------------------------------------------------------- stages
 
 
-def _specimen_from(params: lmfit.Parameters, base: Specimen, p: float) -> Specimen:
-    v = params.valuesdict()
-    line = dataclasses.replace(base.line, **{k: 10 ** v[f"log_{k}"] if k != "n" else v["n"] for k in LINE_KEYS})
-    t = _tag(p)
-    clamp = dataclasses.replace(base.clamp, **{k: (10 ** v[f"log_{k}_{t}"] if k != "n_c" else v[f"n_c_{t}"]) for k in CLAMP_KEYS})
-    return base.with_(line=line, clamp=clamp, pressure=p * 1e3)
-
-
-def _impedance_params(data: list[PressureData], base: Specimen) -> lmfit.Parameters:
+def fit_impedance(data: list[PressureData], priors: dict[float, Specimen]) -> tuple[lmfit.minimizer.MinimizerResult, float]:
+    """Spectra alone: line shared, clamp per pressure, R_cont held at the prior (the spectrum cannot tell
+    it from R_c and R: docs/model.md 9). Fitted with unit weights, so the residual's rms is the analyser's
+    relative noise per component; returned with it, the uncertainties scaled to it."""
     pars = lmfit.Parameters()
-    for k in LINE_KEYS:
-        val = getattr(base.line, k)
-        if k == "n":
-            pars.add("n", val, min=0.3, max=1.0)
-        else:
-            pars.add(f"log_{k}", np.log10(val), min=np.log10(val) - 3, max=np.log10(val) + 3)
+    sp000.add_line(pars, priors[data[0].pressure_kPa])
     for d in data:
-        t = _tag(d.pressure_kPa)
-        for k in CLAMP_KEYS:
-            val = getattr(base.clamp, k)
-            if k == "n_c":
-                pars.add(f"n_c_{t}", val, min=0.3, max=1.0)
-            else:
-                pars.add(f"log_{k}_{t}", np.log10(val), min=np.log10(val) - 3, max=np.log10(val) + 3)
-    return pars
+        sp000.add_clamp(pars, d.pressure_kPa, priors[d.pressure_kPa], vary_r_cont=False)
+    res = Problem(priors, eis=data).minimize(pars)
+    sigma = max(float(np.sqrt(res.redchi)), sp000.EIS_SIGMA_FLOOR)
+    for p in res.params.values():
+        if p.stderr is not None:
+            p.stderr *= sigma
+    return res, sigma
 
 
-def _impedance_residual(ps: lmfit.Parameters, data: list[PressureData], base: Specimen) -> np.ndarray:
-    out = []
-    for d in data:
-        f, z = d.eis
-        zm = imp.impedance(2j * np.pi * f, _specimen_from(ps, base, d.pressure_kPa))
-        r = (zm - z) / np.abs(z)
-        out += [r.real, r.imag]
-    return np.concatenate(out)
-
-
-def fit_impedance(data: list[PressureData], base: Specimen) -> tuple[lmfit.minimizer.MinimizerResult, dict[float, Specimen]]:
-    """Global fit: free-line values shared, clamp-area values per pressure. R_s (the four-probe value) fixed."""
-    res = lmfit.minimize(_impedance_residual, _impedance_params(data, base), args=(data, base), method="least_squares", x_scale="jac")
-    return res, {d.pressure_kPa: _specimen_from(res.params, base, d.pressure_kPa) for d in data}
-
-
-def _log_param(res: lmfit.minimizer.MinimizerResult, name: str) -> ParamEstimate:
-    p = res.params[name]
-    if name.startswith("log_"):
-        val = 10**p.value
-        err = val * np.log(10) * p.stderr if p.stderr is not None else float("nan")
-        return ParamEstimate(val, err)
-    return ParamEstimate(p.value, p.stderr if p.stderr is not None else float("nan"))
-
-
-# ------------------------------------------------------------------------------------- FRF
-
-
-def _frf_params(data: list[PressureData], specimens: dict[float, Specimen]) -> lmfit.Parameters:
-    pars = lmfit.Parameters()
-    any_sp = next(iter(specimens.values()))
-    pars.add("gamma", 0.1, min=0.0, max=1.0)
-    pars.add("log_alpha", np.log10(any_sp.mechanics.alpha), min=-4, max=2)
+def fit_frf(data: list[PressureData], priors: dict[float, Specimen], electrical: lmfit.Parameters) -> lmfit.Parameters:
+    """Start values for alpha and gamma (shared) and K_t bar (per pressure): the complex log of the
+    displacement FRF with the electrical values held at ``electrical`` (or at the priors where it has none)."""
+    pars = sp000.merged(electrical)
+    for p in pars.values():
+        p.vary = False
+    any_sp = next(iter(priors.values()))
+    kts = {}
     for d in data:
         f, h, _, _ = d.frf()
-        pars.add(f"log_kt_{_tag(d.pressure_kPa)}", np.log10(_kt_guess(f, h, specimens[d.pressure_kPa])), min=-1, max=2.5)
+        kts[d.pressure_kPa] = _kt_guess(f, h, priors[d.pressure_kPa])
+    sp000.add_mechanics(pars, 0.1, any_sp.mechanics.alpha, kts)
+    return Problem(priors, frf=data).minimize(pars).params
+
+
+def joint_params(eis_data: list[PressureData], frf_data: list[PressureData], eis0: lmfit.Parameters, frf0: lmfit.Parameters) -> lmfit.Parameters:
+    """Spectra and displacement FRF together: every told parameter free, R_cont where both were measured."""
+    pars = sp000.merged(eis0, {n: p for n, p in frf0.items() if n not in eis0})
+    both = {d.pressure_kPa for d in eis_data} & {d.pressure_kPa for d in frf_data}
+    for p in both:
+        pars[clamp_name("r_cont", p)].vary = True
     return pars
 
 
-def _frf_residual(ps: lmfit.Parameters, data: list[PressureData], specimen_of) -> np.ndarray:
-    v = ps.valuesdict()
-    out = []
-    for d in data:
-        f, h, _, sig = d.frf()
-        sp = _mech(specimen_of(ps, d.pressure_kPa), v["gamma"], 10 ** v["log_alpha"], 10 ** v[f"log_kt_{_tag(d.pressure_kPa)}"])
-        r = np.log(transfer.frf(f, sp) / h)
-        # a 0.3 % floor: the FRF's tiny cycle-to-cycle scatter must not let it drag the electrical values
-        w = 1.0 / np.maximum(np.nan_to_num(sig / np.abs(h), nan=0.01), 3e-3)
-        out += [r.real * w, r.imag * w]
-    return np.concatenate(out)
-
-
-def fit_frf(data: list[PressureData], specimens: dict[float, Specimen]) -> lmfit.minimizer.MinimizerResult:
-    """alpha and gamma shared, K_t bar per pressure, on the complex log of the displacement FRF (electrical fixed)."""
-    return lmfit.minimize(_frf_residual, _frf_params(data, specimens), args=(data, lambda ps, p: specimens[p]), method="least_squares", x_scale="jac")
-
-
-def fit_joint(eis_data: list[PressureData], frf_data: list[PressureData], base: Specimen, eis0: lmfit.Parameters, frf0: lmfit.Parameters, sigma_eis: float) -> lmfit.minimizer.MinimizerResult:
-    """Impedance and displacement FRF together, every parameter free, each residual in units of its noise:
-    the FRF constrains the electrical values the impedance alone leaves loose, and the covariance is global."""
-    pars = lmfit.Parameters()
-    for src in (eis0, frf0):
-        for name, p in src.items():
-            pars.add(name, p.value, min=p.min, max=p.max)
-    eis_p = {d.pressure_kPa for d in eis_data}
-
-    def spec(ps: lmfit.Parameters, p: float) -> Specimen:
-        return _specimen_from(ps, base, p) if p in eis_p else base.with_(pressure=p * 1e3)
-
-    def residual(ps: lmfit.Parameters) -> np.ndarray:
-        return np.concatenate([_impedance_residual(ps, eis_data, base) / sigma_eis, _frf_residual(ps, frf_data, spec)])
-
-    return lmfit.minimize(residual, pars, method="least_squares", x_scale="jac")
-
-
-def _mech(sp: Specimen, gamma: float, alpha: float, kt: float) -> Specimen:
-    return sp.with_(mechanics=dataclasses.replace(sp.mechanics, gamma=gamma, alpha=alpha), Kt_bar=kt)
+def fit_with_frf(problem: Problem, pars: lmfit.Parameters, n_told: int) -> lmfit.minimizer.MinimizerResult:
+    """Fit, then let the FRF residuals tell their error beyond the points' noise (excess_error) and refit
+    until it settles (within 20 %); ``n_told`` parameters are told by the FRF alone."""
+    for _ in range(4):
+        res = problem.minimize(pars)
+        new = problem.frf_excess_from(res.params, n_told)
+        settled = abs(math.log(new / problem.frf_excess)) < math.log(1.2)
+        problem.frf_excess, pars = new, res.params
+        if settled:
+            break
+    return res
 
 
 def _kt_guess(f: np.ndarray, h: np.ndarray, sp: Specimen) -> float:
@@ -197,10 +169,38 @@ def _kt_guess(f: np.ndarray, h: np.ndarray, sp: Specimen) -> float:
     peak = f[np.argmax(np.abs(h) * f ** (1 - sp.line.n))]
     best, err = 5.0, np.inf
     for kt in np.geomspace(0.5, 100, 40):
-        e = abs(transfer.modal_set(sp.with_(Kt_bar=kt)).f_Hz[0] - peak)
+        e = abs(transfer.modal_set(sp.with_(Kt_bar=kt, n_modes=1)).f_Hz[0] - peak)
         if e < err:
             best, err = kt, e
     return best
+
+
+# ------------------------------------------------------------------------------------- estimates
+
+
+def estimate(params: lmfit.Parameters, name: str) -> ParamEstimate:
+    """A parameter on its physical scale (log10 names back to values), with its status."""
+    p = params[name]
+    log = name.startswith("log_")
+    val = 10**p.value if log else p.value
+    if not p.vary:
+        return ParamEstimate(val, float("nan"), "fixed")
+    err = float("nan") if p.stderr is None else float(p.stderr)
+    rel = math.log(10) * err if log else err / max(abs(p.value), 1e-300)
+    span = p.max - p.min if math.isfinite(p.max - p.min) else 1.0
+    at_bound = min(abs(p.value - p.min), abs(p.max - p.value)) < 1e-6 * span
+    told = math.isfinite(rel) and rel <= REL_UNDETERMINED and not at_bound
+    return ParamEstimate(val, val * math.log(10) * err if log else err, "fitted" if told else "undetermined")
+
+
+def clamp_estimates(params: lmfit.Parameters, p: float, prior: Specimen) -> dict[str, ParamEstimate]:
+    """Table 1's six values at pressure p in SI (r_cont in ohm m^2): fitted or fixed at the paper's."""
+    out = {k: estimate(params, clamp_name(k, p)) for k in sp000.CLAMP_FREE}
+    area = prior.geometry.clamp_area
+    out["r_cont"] = dataclasses.replace(out["r_cont"], value=out["r_cont"].value * area, stderr=out["r_cont"].stderr * area)
+    for k in sp000.CLAMP_FIXED:
+        out[k] = ParamEstimate(getattr(prior.clamp, k), float("nan"), "fixed")
+    return out
 
 
 # ------------------------------------------------------------------------------------- driver
@@ -226,78 +226,105 @@ def _measured_actuation(d: PressureData) -> tuple[float | None, float | None]:
     return peak, harm
 
 
+def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit) -> lmfit.Parameters | None:
+    """The fit stages the data allow; the final parameter set (None if nothing could be fitted)."""
+    with_eis = [d for d in sd.pressures if d.eis is not None]
+    with_frf = [d for d in sd.pressures if d.frf() is not None and len(d.sines) >= 4]
+    final = None
+    if with_eis:
+        res, fit.eis_noise_rel = fit_impedance(with_eis, priors)
+        final = res.params
+    else:
+        fit.notes.append("no impedance spectrum: contact resistance and Table 1 values cannot be told (null)")
+    if with_frf:
+        electrical = final if final is not None else _prior_electrical(priors)
+        pars = fit_frf(with_frf, priors, electrical)
+        if with_eis:
+            pars = joint_params(with_eis, with_frf, final, pars)
+        problem = Problem(priors, eis=with_eis, frf=with_frf, sigma_eis=fit.eis_noise_rel or 1.0)
+        n_told = sum(1 for n, p in pars.items() if p.vary and n.startswith(("log_kt_", "gamma", "log_alpha", "R_cont_")))
+        res = fit_with_frf(problem, pars, n_told)
+        r, n_eis = res.residual, problem.offsets[len(with_eis)]
+        fit.eis_redchi = float(np.mean(r[:n_eis] ** 2)) if with_eis else None
+        fit.frf_redchi = float(np.mean(r[n_eis:] ** 2))
+        fit.frf_excess_rel = problem.frf_excess
+        final = res.params
+        fit.alpha = estimate(final, "log_alpha")
+        fit.gamma = estimate(final, "gamma")
+    else:
+        fit.notes.append("no stepped-sine FRF with >= 4 frequencies: f1, K_t bar, alpha and gamma cannot be told (null)")
+    if with_eis:
+        fit.line = {k: estimate(final, n) for k, n in LINE_NAMES.items()}
+        fit.line["R_s"] = ParamEstimate(priors[with_eis[0].pressure_kPa].line.R_s, float("nan"), "fixed")
+        held = "R_sc and R_pc held at the paper's clamp law (Table 1): the spectrum tells only the total leak"
+        if not with_frf:
+            held += "; R_cont held too (the spectrum cannot tell it from the CPE resistances without an FRF): R_cont_ohm null"
+        fit.notes.append(held)
+    return final
+
+
+def _prior_electrical(priors: dict[float, Specimen]) -> lmfit.Parameters:
+    pars = lmfit.Parameters()
+    sp000.add_line(pars, next(iter(priors.values())), vary=False)
+    for p, sp in priors.items():
+        sp000.add_clamp(pars, p, sp, vary_r_cont=False)
+    return pars
+
+
+def _row(d: PressureData, fit: Seed000Fit, final: lmfit.Parameters | None, prior: Specimen, problem: Problem) -> tuple[dict[str, Any], Specimen]:
+    p = d.pressure_kPa
+    row: dict[str, Any] = {"pressure_kPa": p, "R_cont_ohm": None}
+    sp = problem.specimen(final.valuesdict(), p) if final is not None else prior
+    if final is not None and d.eis is not None:
+        ests = clamp_estimates(final, p, prior)
+        rc = ests["r_cont"]
+        area = prior.geometry.clamp_area
+        row["R_cont_status"] = rc.status
+        if rc.status == "fitted":
+            row["R_cont_ohm"] = rc.value / area
+            row["R_cont_ohm_stderr"] = rc.stderr / area
+        row["clamp"] = {k: e.as_json() for k, e in ests.items()}
+    kt_name = f"log_kt_{tag(p)}"
+    if final is not None and kt_name in final:
+        kt = estimate(final, kt_name)
+        ms = transfer.modal_set(sp)
+        dk = kt.value * 1e-4
+        df = (transfer.modal_set(sp.with_(Kt_bar=kt.value + dk)).f_Hz[0] - ms.f_Hz[0]) / dk
+        row.update(Kt_bar=kt.value, Kt_bar_stderr=kt.stderr, f1_Hz=float(ms.f_Hz[0]), f1_Hz_stderr=float(abs(df) * kt.stderr), xi1=float(ms.xi[0]))
+    else:
+        row.update(Kt_bar=None, f1_Hz=None)
+    peak, harm = _measured_actuation(d)
+    row["peak_disp_m"] = peak
+    row["harmonic_amp_m"] = harm
+    forces = [r.force_N for r in d.records if r.force_N.size]
+    if d.records:
+        row["force_N_mean"] = float(np.mean(np.concatenate(forces))) if forces else None
+        if forces:  # the pressure the bench actually applied (the load cell), next to the nominal one
+            row["pressure_measured_kPa"] = row["force_N_mean"] / prior.geometry.clamp_area / 1e3
+    return row, sp
+
+
 def fit_seed000(sd: SessionData) -> Seed000Fit:
     t0 = time.perf_counter()
-    base = base_specimen(sd.sample)
-    notes = list(sd.notes)
-    rows = []
-    fit = Seed000Fit(rows, notes=notes)
-    with_eis = [d for d in sd.pressures if d.eis is not None]
-    specimens = {d.pressure_kPa: base.with_(pressure=d.pressure_kPa * 1e3) for d in sd.pressures}
-    eis_res = None
-    if with_eis:
-        eis_res, fitted = fit_impedance(with_eis, base)
-        specimens.update(fitted)
-        fit.eis_redchi = float(eis_res.redchi)
-        fit.line = {k: _log_param(eis_res, "n" if k == "n" else f"log_{k}") for k in LINE_KEYS}
-    else:
-        notes.append("no impedance spectrum: contact resistance and Table 1 values cannot be told (null)")
-    with_frf = [d for d in sd.pressures if d.frf() is not None and len(d.sines) >= 4]
-    frf_res = None
-    if with_frf:
-        frf_res = fit_frf(with_frf, specimens)
-        fit.frf_redchi = float(frf_res.redchi)
-        if eis_res is not None:  # refine everything together: global covariance, no error propagation gap
-            joint = fit_joint(with_eis, with_frf, base, eis_res.params, frf_res.params, float(np.sqrt(eis_res.redchi)))
-            eis_res = frf_res = joint
-            fit.eis_redchi = fit.frf_redchi = float(joint.redchi)
-            fit.line = {k: _log_param(joint, "n" if k == "n" else f"log_{k}") for k in LINE_KEYS}
-            specimens.update({d.pressure_kPa: _specimen_from(joint.params, base, d.pressure_kPa) for d in with_eis})
-        fit.alpha = _log_param(frf_res, "log_alpha")
-        fit.gamma = _log_param(frf_res, "gamma")
-    else:
-        notes.append("no stepped-sine FRF with >= 4 frequencies: f1, K_t bar, alpha and gamma cannot be told (null)")
+    fit = Seed000Fit([], notes=list(sd.notes))
+    priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
+    final = _run_stages(sd, priors, fit) if sd.pressures else None
+    problem = Problem(priors)
     measured: dict[float, float] = {}
     modelled: dict[float, float] = {}
     for d in sd.pressures:
-        p, tag = d.pressure_kPa, _tag(d.pressure_kPa)
-        row: dict[str, Any] = {"pressure_kPa": p}
-        sp = specimens[p]
-        if eis_res is not None and d.eis is not None:
-            ests = {k: _log_param(eis_res, f"n_c_{tag}" if k == "n_c" else f"log_{k}_{tag}") for k in CLAMP_KEYS}
-            area = sp.geometry.clamp_area
-            row["R_cont_ohm"] = ests["r_cont"].value / area
-            row["R_cont_ohm_stderr"] = ests["r_cont"].stderr / area
-            row["clamp"] = {k: {"value": e.value, "stderr": e.stderr} for k, e in ests.items()}
-        else:
-            row["R_cont_ohm"] = None
-        if frf_res is not None and d in with_frf:
-            kt = _log_param(frf_res, f"log_kt_{tag}")
-            sp = _mech(sp, fit.gamma.value, fit.alpha.value, kt.value)
-            ms = transfer.modal_set(sp)
-            dk = kt.value * 1e-4
-            df = (transfer.modal_set(sp.with_(Kt_bar=kt.value + dk)).f_Hz[0] - ms.f_Hz[0]) / dk
-            row.update(Kt_bar=kt.value, Kt_bar_stderr=kt.stderr, f1_Hz=float(ms.f_Hz[0]), f1_Hz_stderr=float(abs(df) * kt.stderr), xi1=float(ms.xi[0]))
-            specimens[p] = sp
-        else:
-            row.update(Kt_bar=None, f1_Hz=None)
-        peak, harm = _measured_actuation(d)
-        row["peak_disp_m"] = peak
-        row["harmonic_amp_m"] = harm
-        if d.records:
-            forces = np.concatenate([r.force_N for r in d.records if r.force_N.size]) if any(r.force_N.size for r in d.records) else np.zeros(0)
-            row["force_N_mean"] = float(np.mean(forces)) if forces.size else None
-        if peak is not None:
-            measured[p] = peak
-        if frf_res is not None and d in with_frf:
-            modelled[p] = float(abs(transfer.frf(np.array([0.1]), sp)[0]))
-        rows.append(row)
+        row, sp = _row(d, fit, final, priors[d.pressure_kPa], problem)
+        fit.per_pressure.append(row)
+        fit.specimens[d.pressure_kPa] = sp
+        if row["peak_disp_m"] is not None:
+            measured[d.pressure_kPa] = row["peak_disp_m"]
+        if row["Kt_bar"] is not None:
+            modelled[d.pressure_kPa] = float(abs(transfer.frf(np.array([0.1]), sp)[0]))
     if len(measured) >= 2:
         fit.optimum_pressure_kPa = max(measured, key=measured.get)
     elif sd.pressures:
-        notes.append("fewer than two pressures with a step response: the optimum cannot be told (null)")
+        fit.notes.append("fewer than two pressures with a step response: the optimum cannot be told (null)")
     if len(modelled) >= 2:
         fit.model_optimum_pressure_kPa = max(modelled, key=modelled.get)
-    fit.specimens = specimens
     fit.elapsed_s = time.perf_counter() - t0
     return fit
