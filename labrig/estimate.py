@@ -363,12 +363,12 @@ def multisine_bla(
 def excited_bins_from_drive(v: np.ndarray, n_period: int, rel_level: float = 1e-3) -> np.ndarray:
     """The bins (of an n_period-sample period) a periodic drive carries, read from its spectrum (DESIGN.md 6
     imports): those whose power, averaged over the whole periods, exceeds ``1/rel_level`` times the median
-    bin power (the noise floor: most bins of a band-limited drive are empty)."""
+    bin power (the noise floor: most bins of a band-limited drive are empty) and 1e-6 times the strongest
+    line's (a noise-free drive has no floor but rounding)."""
     P = max(len(v) // n_period, 1)
     V = np.mean(np.abs(_period_spectra(v, n_period, P)) ** 2, axis=0)
     V[0] = 0.0
-    floor = np.median(V[1:])
-    return np.flatnonzero(V > floor / rel_level) if floor > 0 else np.flatnonzero(V > 0)
+    return np.flatnonzero(V > max(np.median(V[1:]) / rel_level, 1e-6 * V.max()))
 
 
 # ------------------------------------------------------------------------------------------- drift
@@ -485,15 +485,17 @@ def _amplitude_and_var(t: np.ndarray, x: np.ndarray, f: float, trend: int = 2) -
 
 def template_gains(records: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """(gains, variances) of repeated identical non-periodic records (e.g. steps): each record's least-squares
-    scale onto the mean of all, g_r = <x_r, m> / <m, m>, var g_r = sigma_r^2 / <m, m>, sigma_r^2 from the
-    sample-to-sample differences (white noise: var(diff) = 2 sigma^2; the signal is slow against the rate)."""
+    scale onto the mean of all, both centred (an offset is no gain), g_r = <x_r, m> / <m, m>,
+    var g_r = sigma_r^2 / <m, m>, sigma_r^2 from the sample-to-sample differences (white noise: var(diff) =
+    2 sigma^2; the response is slow against the sample rate; the median keeps the step's edge out)."""
     n = min(len(r) for r in records)
-    X = np.array([np.asarray(r, float)[:n] - np.asarray(r, float)[0] for r in records])
+    X = np.array([np.asarray(r, float)[:n] for r in records])
+    X -= X.mean(axis=1, keepdims=True)
     m = X.mean(0)
     mm = float(m @ m)
     if mm <= 0:
         return np.full(len(X), np.nan), np.full(len(X), np.nan)
-    s2 = np.array([np.median(np.diff(x) ** 2) / (2 * 0.4549) for x in X])  # median of chi^2_1 is 0.4549
+    s2 = np.median(np.diff(X, axis=1) ** 2, axis=1) / (2 * 0.4549)  # median of chi^2_1 is 0.4549
     return X @ m / mm, s2 / mm
 
 

@@ -198,11 +198,34 @@ def _multisine_layout(recs: list[TimeRecord]) -> dict[str, Any]:
     if ex.size == 0:
         raise ValueError("no excited lines in the drive's spectrum")
     g = int(np.gcd.reduce(ex))  # every line a multiple of g: the drive repeats every period / g
-    periods = min(r.v.size for r in recs) // (n // g)
+    n //= g
+    N = min(r.v.size for r in recs)
+    periods = N // n
     if periods < 1:
         raise ValueError(f"record shorter than one period ({period:g} s)")
+    lead = _periodic_start(recs[0], n, periods) if periods > 1 else N - n
     return {"period": period / g, "fs": fs, "excited": ex // g, "other": np.setdiff1d(anyex, ex) // g, "periods": periods,
-            "drop": 1 if periods >= 3 else 0, "lead": 0}
+            "drop": 1 if periods >= 3 else 0, "lead": lead}
+
+
+def _periodic_start(r: TimeRecord, n: int, periods: int) -> int:
+    """Where ``periods`` whole periods sit best in an imported record with extra samples (pre-trigger,
+    lead-in, a return to 0 V): the offset o whose first two periods differ least, summed over drive and
+    displacement, each relative to its power (the response's start transient and any non-periodic samples
+    raise the mismatch). Sliding sums make it O(N)."""
+    N = r.v.size
+    extra = N - periods * n
+    if extra <= 0:
+        return 0
+    cost = np.zeros(extra + 1)
+    for x in (r.v, r.d):
+        x = np.asarray(x, float) - np.mean(x)
+        sq = np.concatenate([[0], np.cumsum(x**2)])
+        cross = np.concatenate([[0], np.cumsum(x[:-n] * x[n:])])
+        o = np.arange(extra + 1)
+        a, b, c = sq[o + n] - sq[o], sq[o + 2 * n] - sq[o + n], cross[o + n] - cross[o]
+        cost += (a + b - 2 * c) / max(float(sq[-1]) / N * n, 1e-300)
+    return int(np.argmin(cost))
 
 
 def _add_multisine(b: PressureData, notes: list[str]) -> None:

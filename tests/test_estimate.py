@@ -1,0 +1,268 @@
+"""Estimators from raw records: the multisine BLA against the bench's true H(jw) and its stated variance,
+odd/even nonlinear distortion apart, drift between and within records, the load-cell force trend, and the
+BLA from a multisine session and from an imported multisine CSV."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from labrig.estimate import (
+    classify_lines,
+    gain_drift,
+    multisine_bla,
+    sine_segment_gains,
+    template_gains,
+)
+from labrig.fit.session_data import load_session
+from labrig.importer import import_manifest
+from labrig.physics import presets, transfer
+from labrig.session_run import RunRequest, execute
+from mock_devices.scenarios import effects_for
+from protocols import multisine
+
+PRESSURE = 3062.0
+TRUTH = presets.get("paper").specimen(PRESSURE)
+# a large low-band multisine for distortion: 0.8 V RMS over 0.15-1 Hz (every odd line, one in two left out)
+NL_DESIGN = "rms_V = 0.8\nf_max_Hz = 1.0\nperiod_s = 20.0\nperiods = 3\nfs_Hz = 200.0\nlines_per_octave = 0\nskip_one_in = 2\n"
+
+
+def run_multisine(tmp_path, name: str, table: str = "", scenario: str | None = None, seed: int = 1, **req):
+    spec = tmp_path / f"{name}.toml"
+    spec.write_text(f'protocol = "multisine"\npressure_kPa = {PRESSURE}\n[multisine]\n{table}')
+    out = tmp_path / f"{name}.h5"
+    res = execute(RunRequest(str(spec), out, seed=seed, effects=effects_for(scenario, seed) if scenario else [], **req))
+    assert res.exit_code == 0, res.reason
+    return out
+
+
+@pytest.fixture(scope="module")
+def clean(tmp_path_factory):
+    """The multisine preset (2 realisations x 2 periods) on the clean bench."""
+    path = run_multisine(tmp_path_factory.mktemp("clean"), "clean")
+    return path, load_session(path)
+
+
+# --------------------------------------------------------------------------------------------- the BLA
+
+
+def test_bla_recovers_the_true_frf_within_its_stated_uncertainty(clean):
+    _, sd = clean
+    p = sd.pressures[0]
+    b = p.bla
+    assert b is not None and b.realisations == 2 and b.periods == 2 and sd.notes == []
+    design = multisine.design(0.35, 0.1, 20.0, 10.0, 1000.0, 1, 0, 3.0, 1, 3.0)
+    assert np.allclose(b.f_Hz, design.excited_Hz)  # the lines the design excites, 0.1 Hz first
+    H = transfer.frf(b.f_Hz, TRUTH)
+    z2 = np.abs(b.G_disp - H) ** 2 / b.total_var_disp
+    assert np.sqrt(np.mean(np.abs(b.G_disp / H - 1) ** 2)) < 0.01
+    assert 0.3 < np.mean(z2) < 2.5  # honest on average: E|e|^2 / var = 1
+    assert np.max(z2) < 25  # and on every line (exponential tail: P(> 25) ~ 1e-11 per line)
+    Y = transfer.admittance_tf(2j * np.pi * b.f_Hz, TRUTH)
+    assert np.sqrt(np.mean(np.abs(b.G_cur / Y - 1) ** 2)) < 1e-3
+    assert 0.2 < np.mean(np.abs(b.G_cur - Y) ** 2 / b.total_var_cur) < 3
+
+
+def test_frf_lines_merge_sources_in_frequency_order(clean):
+    _, sd = clean
+    p = sd.pressures[0]
+    assert p.frf() is None and p.frf_lines("sines") is None  # no stepped sine in this session
+    f, hd, hc, sig = p.frf_lines()
+    assert np.all(np.diff(f) >= 0) and np.array_equal(f, p.bla.f_Hz)
+    assert np.allclose(sig, np.sqrt(p.bla.total_var_disp)) and np.all(sig > 0)
+    with pytest.raises(ValueError):
+        p.frf_lines("everything")
+
+
+def test_odd_multisine_lines_are_classified_by_parity():
+    ms = multisine.design(1.0, 0.1, 5.0, 20.0, 200.0, seed=3, realisation=0)  # every odd line, one in four left out
+    odd, even, is_odd = classify_lines(ms.excited_bins, 10_000, ms.detection_bins)
+    assert is_odd and np.all(ms.excited_bins % 2 == 1)
+    assert np.all(odd % 2 == 1) and np.all(even % 2 == 0) and even[0] == 2
+    assert set(ms.detection_bins) <= set(odd) and not set(odd) & set(ms.excited_bins)
+    assert set(odd) | set(even) | set(ms.excited_bins) == set(range(1, ms.excited_bins.max() + 2))
+    other = multisine.design(1.0, 0.1, 5.0, 20.0, 200.0, seed=4, realisation=0).excited_bins  # a different grid
+    odd2, _, _ = classify_lines(ms.excited_bins, 10_000, None, other_bins=other)
+    assert not set(odd2) & set(other)  # a line another realisation excites is no detection line
+    with pytest.raises(ValueError):
+        classify_lines(ms.excited_bins, 10_000, ms.excited_bins[:1])  # an excited line is no detection line
+    assert not classify_lines(np.array([2, 3, 5]), 100)[2]  # an even line excited: not an odd multisine
+
+
+def _synthetic(nonlinear, seed=0, R=2, P=3, noise=1e-4):
+    """Periodic response of a first-order low-pass with a static nonlinearity after it, plus white noise."""
+    n, fs = 2000, 200.0
+    recs = []
+    for r in range(R):
+        ms = multisine.design(1.0, 0.1, 5.0, n / fs, fs, seed=3, realisation=r)
+        f = np.fft.rfftfreq(n, 1 / fs)
+        y = np.fft.irfft(np.fft.rfft(ms.period_V) / (1 + 1j * f / 1.5), n)
+        y = np.tile(nonlinear(y), P)
+        rng = np.random.default_rng([seed, r])
+        recs.append({"v": ms.repeat(P) + noise * rng.standard_normal(P * n), "d": y + noise * rng.standard_normal(P * n),
+                     "i": 1e-3 * ms.repeat(P) + noise * rng.standard_normal(P * n)})
+    return multisine_bla(recs, ms.excited_bins, ms.detection_bins, n / fs, P, 0, fs=fs, transient=False)
+
+
+@pytest.mark.parametrize("law, odd_up, even_up", [(lambda y: y, False, False), (lambda y: y + 0.05 * y**3, True, False), (lambda y: y + 0.05 * y**2, False, True)])
+def test_odd_and_even_distortion_land_on_their_own_lines(law, odd_up, even_up):
+    b = _synthetic(law)
+    for levels, up in ((b.odd_disp, odd_up), (b.even_disp, even_up)):
+        assert (levels.fraction_above() > 0.5) == up
+        assert (np.median(levels.ratio) > 10) == up
+    assert b.odd_cur.fraction_above() < 0.05 and b.even_cur.fraction_above() < 0.05  # the current is linear
+
+
+@pytest.fixture(scope="module")
+def nonlinear_runs(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("nl")
+    out = {}
+    for sc in ("none", "large_deflection", "strain_resistance"):
+        path = run_multisine(tmp, sc, NL_DESIGN, None if sc == "none" else sc, safety={"max_drive_V": 4.0})
+        out[sc] = load_session(path).pressures[0].bla
+    return out
+
+
+def test_bench_distortion_clean_stays_at_the_noise(nonlinear_runs):
+    b = nonlinear_runs["none"]
+    for levels in (b.odd_disp, b.even_disp, b.odd_cur, b.even_cur):
+        assert levels.fraction_above() <= 0.2 and np.mean(levels.ratio) < 3
+
+
+def test_bench_large_deflection_is_odd_distortion(nonlinear_runs):
+    b = nonlinear_runs["large_deflection"]
+    assert b.odd_disp.fraction_above() >= 0.6 and np.mean(b.odd_disp.ratio) > 10
+    assert b.even_disp.fraction_above() <= 0.2 and np.mean(b.even_disp.ratio) < 3
+    assert b.nonlinear_var_disp.max() > 0
+
+
+def test_bench_strain_resistance_shows_even_distortion(nonlinear_runs):
+    b = nonlinear_runs["strain_resistance"]
+    assert b.even_disp.fraction_above() >= 0.8 and np.mean(b.even_disp.ratio) > 10
+    assert b.even_cur.fraction_above() >= 0.8
+
+
+# --------------------------------------------------------------------------------------------- drift
+
+
+def test_gain_drift_recovers_a_known_drift_with_honest_uncertainty():
+    rng = np.random.default_rng(5)
+    beta = 2e-4 - 5e-5j  # 1/s
+    t = np.array([0.0, 40.0, 80.0, 120.0])
+    H = (1 + rng.random(12)) * np.exp(1j * rng.uniform(-3, 3, 12))
+    var = (0.003 * np.abs(H)) ** 2 * np.ones((4, 1))
+    z = []
+    for _ in range(300):
+        noise = np.sqrt(var / 2) * (rng.standard_normal((4, 12)) + 1j * rng.standard_normal((4, 12)))
+        d = gain_drift(t, H * np.exp(beta * t[:, None]) + noise, var)
+        z += [(d.rate_per_s.real - beta.real) / d.sigma_per_s, (d.rate_per_s.imag - beta.imag) / d.sigma_per_s]
+    assert d.repeats == 4 and d.lines == 12 and d.span_s == 120.0 and d.significant()
+    assert abs(np.mean(z)) < 0.2 and 0.8 < np.std(z) < 1.2  # unbiased, and the stated sigma is right
+    still = gain_drift(t, H + noise, var)
+    assert not still.significant() and abs(still.birge - 1) < 0.3
+
+
+def test_gain_drift_scales_its_uncertainty_when_repeats_scatter_more_than_the_noise():
+    rng = np.random.default_rng(6)
+    H = np.ones(30, complex)
+    G = H + 0.02 * (rng.standard_normal((2, 30)) + 1j * rng.standard_normal((2, 30)))  # scatter 0.02, stated 0.001
+    d = gain_drift(np.array([0.0, 50.0]), G, np.full((2, 30), 1e-6))
+    assert d.birge > 10 and not d.significant()
+    assert gain_drift(np.array([0.0]), H[None], np.ones((1, 30))) is None  # one repeat: no drift
+
+
+def test_sine_gain_from_the_first_and_the_last_part_of_a_long_record():
+    fs, f, T = 200.0, 0.5, 40.0
+    t = np.arange(int(T * fs)) / fs
+    rng = np.random.default_rng(1)
+    v = np.sin(2 * np.pi * f * t)
+    for rate in (0.0, -2e-3):
+        x = 1e-3 * (1 + rate * t) * np.sin(2 * np.pi * f * t - 0.4) + 1e-6 * rng.standard_normal(t.size)
+        tm, g, var = sine_segment_gains(t, v, x, f, segments=2)
+        assert tm.size == 2 and np.all(var > 0)
+        d = gain_drift(tm, g[:, None], var[:, None])
+        assert d.significant() == (rate != 0)
+        assert abs(d.rate_per_s.real - rate / (1 + rate * T / 2)) < 4 * d.sigma_per_s  # relative to the mean gain
+
+
+def test_template_gains_of_repeated_steps():
+    t = np.arange(2000) / 100.0
+    step = 1e-3 * (1 - np.exp(-t / 2.0))
+    rng = np.random.default_rng(2)
+    g, var = template_gains([s * step + 2e-6 * rng.standard_normal(t.size) for s in (1.0, 0.95, 0.9)])
+    assert np.allclose(g / g[0], [1.0, 0.95, 0.9], atol=5 * np.sqrt(var.max()))
+    assert np.all(np.sqrt(var) < 1e-3)
+
+
+def test_dehydration_drifts_between_realisations_and_the_clean_bench_does_not(tmp_path, clean):
+    _, sd = clean
+    quiet = sd.pressures[0].drift
+    assert {"multisine/realisations", "multisine/periods"} <= set(quiet)
+    assert not quiet["multisine/realisations"].significant() and not quiet["multisine/periods"].significant()
+    dry = load_session(run_multisine(tmp_path, "dry", scenario="dehydration", seed=2)).pressures[0].drift
+    d = dry["multisine/realisations"]
+    assert d.significant(1e-6) and d.rate_per_s.real < 0 and d.relative_change.real < -0.005  # the strip loses gain
+
+
+def test_clamp_relaxation_shows_in_the_load_cell_during_each_record(tmp_path, clean):
+    _, sd = clean
+    for r in sd.pressures[0].records:
+        ft = r.force_trend
+        assert ft.samples > 5 and abs(ft.mean_N - PRESSURE * 1e3 * 1.6e-5) < 0.5 and abs(ft.slope_N_per_s) < 4 * ft.slope_sigma_N_per_s
+    creep = load_session(run_multisine(tmp_path, "creep", scenario="clamp_relaxation", seed=2)).pressures[0]
+    trends = [r.force_trend for r in creep.records]
+    assert all(ft.slope_N_per_s < -2 * ft.slope_sigma_N_per_s for ft in trends)  # the clamp force falls while each record runs
+    w = np.array([ft.slope_sigma_N_per_s for ft in trends]) ** -2
+    assert np.sum(w * [ft.slope_N_per_s for ft in trends]) / np.sum(w) < -6 / np.sqrt(np.sum(w))
+    assert trends[-1].mean_N < trends[0].mean_N - 0.3
+
+
+# --------------------------------------------------------------------------------------------- imports
+
+
+def _write_csv(path, t, v, i, d):
+    np.savetxt(path, np.column_stack([t, v, i, d]), delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+
+
+SPECIMEN = '[specimen]\nlength_m = 0.030\nwidth_m = 0.004\nthickness_m = 0.00022\nclamp_area_m2 = 1.6e-5\nmedium = "water"\n'
+
+
+def test_imported_multisine_csv_gives_the_same_bla(tmp_path, clean):
+    _, sd = clean
+    p = sd.pressures[0]
+    manifest = SPECIMEN
+    for k, r in enumerate(p.of_kind("multisine")):
+        _write_csv(tmp_path / f"ms{k}.csv", r.t, r.v, r.i, r.d)
+        manifest += f'[[record]]\nkind = "multisine"\npressure_kPa = {PRESSURE:g}\nperiod_s = 10.0\nfile = "ms{k}.csv"\n'
+    (tmp_path / "m.toml").write_text(manifest)
+    b = load_session(import_manifest(tmp_path / "m.toml", tmp_path / "imp.h5")).pressures[0].bla
+    assert b is not None and b.realisations == 2 and b.periods == 2
+    assert np.array_equal(b.f_Hz, p.bla.f_Hz)  # the excited lines, read from the drive's spectrum
+    assert np.all(np.abs(b.G_disp - p.bla.G_disp) ** 2 < 0.1 * p.bla.noise_var_disp)  # found the periods after the lead-in
+    H = transfer.frf(b.f_Hz, TRUTH)
+    assert np.mean(np.abs(b.G_disp - H) ** 2 / b.total_var_disp) < 2.5
+
+
+def test_imported_multisine_with_a_doubled_period_and_repeated_steps(tmp_path):
+    fs, n = 100.0, 1000
+    ms = multisine.design(0.3, 0.1, 5.0, n / fs, fs, seed=2, realisation=0)
+    f = np.fft.rfftfreq(n, 1 / fs)
+    H = transfer.frf(np.maximum(f, 1e-3), TRUTH)
+    y = np.fft.irfft(np.fft.rfft(ms.period_V) * H, n)
+    rng = np.random.default_rng(0)
+    P = 4
+    t = np.arange(P * n) / fs
+    _write_csv(tmp_path / "ms.csv", t, ms.repeat(P), 1e-3 * ms.repeat(P), np.tile(y, P) + 1e-7 * rng.standard_normal(P * n))
+    ts = np.arange(3000) / fs
+    step = 1e-3 * (ts > 1) * (1 - np.exp(-(ts - 1).clip(0) / 2))
+    for k, s in enumerate((1.0, 0.97, 0.94)):
+        _write_csv(tmp_path / f"s{k}.csv", ts, (ts > 1) * 1.0, 0 * ts, s * step + 1e-6 * rng.standard_normal(ts.size))
+    (tmp_path / "m.toml").write_text(
+        SPECIMEN + f'[[record]]\nkind = "multisine"\npressure_kPa = 612\nperiod_s = {2 * n / fs:g}\nfile = "ms.csv"\n'  # twice the true period
+        + "".join(f'[[record]]\nkind = "step"\npressure_kPa = 612\namplitude_V = 1.0\nfile = "s{k}.csv"\n' for k in range(3)))
+    p = load_session(import_manifest(tmp_path / "m.toml", tmp_path / "imp.h5")).pressures[0]
+    assert np.allclose(p.bla.f_Hz, ms.excited_Hz)
+    assert p.bla.odd_multisine and p.bla.periods == 3  # the drive repeats every 10 s (its lines say so): 4 periods, 1 transient
+    assert np.allclose(p.bla.G_disp, transfer.frf(ms.excited_Hz, TRUTH), rtol=1e-3)
+    d = p.drift["step/repeats"]
+    assert d.significant() and d.relative_change.real < -0.04
