@@ -159,13 +159,15 @@ def test_a_spectrum_alone_cannot_tell_the_contact_resistance(fits):
     sp000.add_line(pars, priors[eis[0].pressure_kPa])
     for d in eis:
         sp000.add_clamp(pars, d.pressure_kPa, priors[d.pressure_kPa], vary_r_cont=True)
-    res = sp000.Problem(priors, eis=eis).minimize(pars)
-    sigma = math.sqrt(res.redchi)
+    # linear analysis at the bench's values, noise as the analyser's (0.2 % complex)
+    jac = sp000.Problem(priors, eis=eis, sigma_eis=0.002 / np.sqrt(2)).jacobian(pars)
+    sd_all = np.sqrt(np.diag(np.linalg.inv(jac.T @ jac)))
+    names = [n for n, p in pars.items() if p.vary]
     for d in eis:
-        p = res.params[sp000.clamp_name("r_cont", d.pressure_kPa)]
-        # R_cont trades against R_c and R: its 1-sigma from the spectra alone exceeds its own value (or the
-        # covariance does not exist), against ~40 % with the FRF's voltage divider
-        assert p.stderr is None or p.stderr * sigma > p.value
+        name = sp000.clamp_name("r_cont", d.pressure_kPa)
+        # R_cont trades against R_c and R: its 1-sigma from the spectra alone exceeds its own value,
+        # against ~40 % with the FRF's voltage divider
+        assert sd_all[names.index(name)] > pars[name].value
     out = fit_seed000(_without_frf(sd)).to_json()
     for r in out["per_pressure"]:
         assert r["R_cont_ohm"] is None and r["R_cont_status"] == "fixed"
