@@ -61,7 +61,7 @@ def normalised_errors(out: dict) -> list[tuple[str, float, float]]:
         add("R_cont", r["R_cont_ohm"], r.get("R_cont_ohm_stderr"), sp.clamp.r_cont / sp.geometry.clamp_area)
         add("Kt_bar", r["Kt_bar"], r.get("Kt_bar_stderr"), sp.Kt_bar)
         add("f1", r["f1_Hz"], r.get("f1_Hz_stderr"), float(transfer.modal_set(sp).f_Hz[0]))
-        for k, e in r["clamp"].items():
+        for k, e in r.get("clamp", {}).items():
             if e["status"] == "fitted" and k != "r_cont":
                 add(k, e["value"], e["stderr"], getattr(sp.clamp, k))
     sp = bench_truth(out["per_pressure"][0]["pressure_kPa"])
@@ -173,6 +173,16 @@ def test_a_spectrum_alone_cannot_tell_the_contact_resistance(fits):
         assert r["R_cont_ohm"] is None and r["R_cont_status"] == "fixed"
     assert any("R_cont held" in n for n in out["notes"])
     assert all(r["R_cont_ohm_stderr"] < 0.6 * r["R_cont_ohm"] for r in joint["per_pressure"])
+
+
+def test_a_multisine_session_is_fitted_from_its_bla(tmp_path):
+    """PressureData.frf_lines: the multisine's BLA with its variance over realisations feeds the FRF fit."""
+    path = tmp_path / "multisine.h5"
+    assert execute(RunRequest("multisine", path, seed=1)).exit_code == 0
+    out = fit_seed000(load_session(path)).to_json()
+    errors = normalised_errors(out)
+    assert {e[0] for e in errors} == {"Kt_bar", "f1", "alpha", "gamma"}
+    assert max(e[1] for e in errors) < 4 and max(e[2] for e in errors if e[0] == "f1") < 0.01
 
 
 if __name__ == "__main__":

@@ -32,6 +32,7 @@ from labrig.physics.clamp import ClampLaw
 from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen
 
 REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
+MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
 
 
 def base_specimen(sample: dict[str, Any]) -> Specimen:
@@ -136,7 +137,7 @@ def fit_frf(data: list[PressureData], priors: dict[float, Specimen], electrical:
     any_sp = next(iter(priors.values()))
     kts = {}
     for d in data:
-        f, h, _, _ = d.frf()
+        f, h, _, _ = d.frf_lines()
         kts[d.pressure_kPa] = _kt_guess(f, h, priors[d.pressure_kPa])
     sp000.add_mechanics(pars, 0.1, any_sp.mechanics.alpha, kts)
     return Problem(priors, frf=data).minimize(pars).params
@@ -229,7 +230,7 @@ def _measured_actuation(d: PressureData) -> tuple[float | None, float | None]:
 def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit) -> lmfit.Parameters | None:
     """The fit stages the data allow; the final parameter set (None if nothing could be fitted)."""
     with_eis = [d for d in sd.pressures if d.eis is not None]
-    with_frf = [d for d in sd.pressures if d.frf() is not None and len(d.sines) >= 4]
+    with_frf = [d for d in sd.pressures if (lines := d.frf_lines()) is not None and lines[0].size >= MIN_FRF_LINES]
     final = None
     if with_eis:
         res, fit.eis_noise_rel = fit_impedance(with_eis, priors)
@@ -252,7 +253,7 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
         fit.alpha = estimate(final, "log_alpha")
         fit.gamma = estimate(final, "gamma")
     else:
-        fit.notes.append("no stepped-sine FRF with >= 4 frequencies: f1, K_t bar, alpha and gamma cannot be told (null)")
+        fit.notes.append(f"no stepped-sine FRF (nor multisine BLA) with >= {MIN_FRF_LINES} frequencies: f1, K_t bar, alpha and gamma cannot be told (null)")
     if with_eis:
         fit.line = {k: estimate(final, n) for k, n in LINE_NAMES.items()}
         fit.line["R_s"] = ParamEstimate(priors[with_eis[0].pressure_kPa].line.R_s, float("nan"), "fixed")

@@ -51,8 +51,8 @@ def clamp_name(key: str, p: float) -> str:
 
 
 def frf_noise(h: np.ndarray, sig: np.ndarray) -> np.ndarray:
-    """Relative standard deviation per component (real, imaginary) of each FRF point: the estimator's
-    sigma is that of the complex value, hence the sqrt(2) (NaN sigma: 1 %)."""
+    """Relative standard deviation per component (real, imaginary) of each FRF point: the estimators give
+    that of the complex value (PressureData.frf_lines), hence the sqrt(2) (NaN sigma: 1 %)."""
     return np.nan_to_num(sig / np.abs(h), nan=0.01 * np.sqrt(2)) / np.sqrt(2)
 
 
@@ -78,7 +78,7 @@ class Problem:
 
     def __post_init__(self) -> None:
         self._eis_data = {d.pressure_kPa: d.eis for d in self.eis}
-        self._frf_data = {d.pressure_kPa: d.frf() for d in self.frf}
+        self._frf_data = {d.pressure_kPa: d.frf_lines() for d in self.frf}  # stepped sines and multisine BLA
         self._noise = {p: np.tile(frf_noise(h, sig), 2) for p, (f, h, _, sig) in self._frf_data.items()}
         self.blocks = [("eis", d.pressure_kPa) for d in self.eis] + [("frf", d.pressure_kPa) for d in self.frf]
         sizes = [2 * (d.eis[0].size if k == "eis" else self._frf_data[p][0].size) for (k, p), d in zip(self.blocks, self.eis + self.frf)]
