@@ -305,59 +305,55 @@ def multisine_bla(
     top = min(n // 2, int(ex.max()) + 2)
     odd, even, is_odd = classify_lines(ex, top, detection_bins, other_bins)
     start = lead_in + drop_periods * n
-    R = len(records)
-    G = {"d": [], "i": []}
-    Gp = {"d": [], "i": []}
-    var = {"d": [], "i": []}
-    level = {"d": [], "i": []}
-    noise = {"d": [], "i": []}
-    t_rp = []
     taus = tuple(tau for tau in TRANSIENT_TAUS_S if tau <= 0.75 * P * period_s)  # longer ones look like the lowest line
     kappa = transient_inflation(P * n, n, ex, fs, taus) if transient else np.ones(ex.size)
-    for rec in records:
-        sig = {}
-        for key in ("v", "i", "d"):
-            x = np.asarray(rec[key], float)[start : start + P * n]
-            if x.size < P * n:
-                raise ValueError(f"record too short: {x.size} samples for {P} periods of {n}")
-            if transient:
-                x = remove_transient(x, n, ex, fs, taus)
-            sig[key] = _period_spectra(x, n, P)[:, : top + 1]
-        U = sig["v"]
-        Um = U.mean(0)
-        suu = _mean_noise(U, U, smooth_bins).real if P > 1 else _residual_noise(U.mean(0, keepdims=True), ex, smooth_bins)
-        for key in ("d", "i"):
-            Y = sig[key]
-            Ym = Y.mean(0)
-            if P > 1:
-                syy, syu = _mean_noise(Y, Y, smooth_bins).real, _mean_noise(Y, U, smooth_bins)
-            else:
-                syy, syu = _residual_noise(Y, ex, smooth_bins), np.zeros(top + 1, complex)
-            g = Ym[ex] / Um[ex]
-            G[key].append(g)
-            Gp[key].append(Y[:, ex] / U[:, ex])
-            var[key].append(kappa * _ratio_var(g, Ym[ex], Um[ex], syy[ex], suu[ex], syu[ex]))
-            level[key].append(np.abs(Ym) ** 2)
-            noise[key].append(syy if P > 1 else np.full(top + 1, np.nan))
-        t0 = float(rec.get("t0", 0.0))
-        t_rp.append(t0 + (start + (np.arange(P) + 0.5) * n) / fs)
+    per = [_realisation(rec, start, n, P, ex, top, fs, taus if transient else None, kappa, smooth_bins) for rec in records]
+    R = len(per)
     out = {}
     for key in ("d", "i"):
-        g = np.array(G[key])
-        nv = np.mean(var[key], axis=0) / R
-        if R > 1:
-            ratio = (np.var(g, axis=0, ddof=1) / R) / nv
-            tv = nv * _moving_mean(ratio, smooth_lines)
-        else:
-            tv = nv.copy()
-        lv, nz = np.mean(level[key], axis=0), np.mean(noise[key], axis=0)
-        levels = [LineLevels(b / period_s, lv[b], nz[b], R) for b in (odd, even)]
-        out[key] = (g.mean(0), nv, tv, levels, np.array(Gp[key]), np.array(var[key]) * P)
+        g = np.array([r[key]["G"] for r in per])
+        nv = np.mean([r[key]["var"] for r in per], axis=0) / R
+        tv = nv * _moving_mean((np.var(g, axis=0, ddof=1) / R) / nv, smooth_lines) if R > 1 else nv.copy()
+        level, noise = (np.mean([r[key][k] for r in per], axis=0) for k in ("level", "noise"))
+        out[key] = {"G": g.mean(0), "noise": nv, "total": tv, "Gp": np.array([r[key]["Gp"] for r in per]),
+                    "var_p": np.array([r[key]["var"] for r in per]) * P,
+                    "odd": LineLevels(odd / period_s, level[odd], noise[odd], R), "even": LineLevels(even / period_s, level[even], noise[even], R)}
     d, i = out["d"], out["i"]
     return BlaEstimate(
-        ex / period_s, d[0], i[0], d[1], d[2], i[1], i[2], d[3][0], d[3][1], i[3][0], i[3][1], R, P, is_odd,
-        d[4], i[4], d[5], i[5], np.array(t_rp),
+        f_Hz=ex / period_s, G_disp=d["G"], G_cur=i["G"], noise_var_disp=d["noise"], total_var_disp=d["total"],
+        noise_var_cur=i["noise"], total_var_cur=i["total"], odd_disp=d["odd"], even_disp=d["even"], odd_cur=i["odd"],
+        even_cur=i["even"], realisations=R, periods=P, odd_multisine=is_odd, G_disp_rp=d["Gp"], G_cur_rp=i["Gp"],
+        var_disp_p=d["var_p"], var_cur_p=i["var_p"], t_rp=np.array([r["t_p"] for r in per]),
     )
+
+
+def _realisation(rec: dict, start: int, n: int, P: int, ex: np.ndarray, top: int, fs: float, taus: tuple[float, ...] | None,
+                 kappa: np.ndarray, smooth_bins: int) -> dict:
+    """One realisation of ``multisine_bla``: per output (d, i) the gain G_r, its variance, the per-period gains,
+    the output power and its noise at every bin up to ``top``; and the mid-time of each period."""
+    sig = {}
+    for key in ("v", "i", "d"):
+        x = np.asarray(rec[key], float)[start : start + P * n]
+        if x.size < P * n:
+            raise ValueError(f"record too short: {x.size} samples for {P} periods of {n}")
+        if taus is not None:
+            x = remove_transient(x, n, ex, fs, taus)
+        sig[key] = _period_spectra(x, n, P)[:, : top + 1]
+    U = sig["v"]
+    Um = U.mean(0)
+    suu = _mean_noise(U, U, smooth_bins).real if P > 1 else _residual_noise(U, ex, smooth_bins)
+    out: dict = {"t_p": float(rec.get("t0", 0.0)) + (start + (np.arange(P) + 0.5) * n) / fs}
+    for key in ("d", "i"):
+        Y = sig[key]
+        Ym = Y.mean(0)
+        if P > 1:
+            syy, syu = _mean_noise(Y, Y, smooth_bins).real, _mean_noise(Y, U, smooth_bins)
+        else:
+            syy, syu = _residual_noise(Y, ex, smooth_bins), np.zeros(top + 1, complex)
+        g = Ym[ex] / Um[ex]
+        out[key] = {"G": g, "Gp": Y[:, ex] / U[:, ex], "var": kappa * _ratio_var(g, Ym[ex], Um[ex], syy[ex], suu[ex], syu[ex]),
+                    "level": np.abs(Ym) ** 2, "noise": syy if P > 1 else np.full(top + 1, np.nan)}
+    return out
 
 
 def excited_bins_from_drive(v: np.ndarray, n_period: int, rel_level: float = 1e-3) -> np.ndarray:
@@ -471,6 +467,52 @@ def sine_segment_gains(t: np.ndarray, v: np.ndarray, x: np.ndarray, f: float, sk
         g.append(gs)
         var.append(abs(gs) ** 2 * (vx / abs(ax) ** 2 + vv / abs(av) ** 2))
     return np.array(tm), np.array(g), np.array(var)
+
+
+def sine_gain_rate(t: np.ndarray, v: np.ndarray, x: np.ndarray, f: float, skip_cycles: float = 0.0) -> tuple[complex, float, float]:
+    """(rho, sigma, span_s): the relative rate of change of the gain x/v at f within one sine record.
+
+    One least-squares fit over the whole cycles after ``skip_cycles``, with s = (t - t_mid) / T:
+
+        y(t) = Re[(A + A' s T) e^{j w t}] + c0 + c1 s + sum_m d_m exp(-(t - t0) / tau_m)
+
+    (the transient columns as ``remove_transient``'s: without them the start's slow tail reads as drift).
+    rho_y = A'/A with var = var A'/|A|^2 + |A'|^2 var A/|A|^4 from the fit's covariance; the gain's rate is
+    rho_x - rho_v (per second; real part gain, imaginary part phase in rad/s), sigma per part."""
+    t = np.asarray(t, float)
+    sl = _whole_cycles(t, f, skip_cycles, None)
+    tt = t[sl]
+    T = float(np.ptp(tt))
+    if tt.size < 16 or T * f < 2:
+        return complex("nan"), float("nan"), T
+    s = (tt - tt.mean()) / T
+    w = 2 * np.pi * f * tt
+    taus = [tau for tau in TRANSIENT_TAUS_S if tau <= 0.75 * T]
+    A = np.stack([np.ones_like(s), s] + [np.exp(-(tt - tt[0]) / tau) for tau in taus] + [np.cos(w), np.sin(w), s * np.cos(w), s * np.sin(w)], axis=1)
+    pinv = np.linalg.pinv(A.T @ A)
+    rho, var = 0j, 0.0
+    for y, sign in ((np.asarray(v, float)[sl], -1), (np.asarray(x, float)[sl], 1)):
+        c = pinv @ (A.T @ y)
+        cov = pinv * float(np.sum((y - A @ c) ** 2)) / max(y.size - A.shape[1], 1)
+        a, a1 = complex(c[-4], -c[-3]), complex(c[-2], -c[-1]) / T
+        va, va1 = cov[-4, -4] + cov[-3, -3], (cov[-2, -2] + cov[-1, -1]) / T**2
+        rho += sign * a1 / a
+        var += va1 / abs(a) ** 2 + abs(a1) ** 2 * va / abs(a) ** 4
+    return rho, float(np.sqrt(var / 2)), T
+
+
+def combine_rates(rho: np.ndarray, sigma: np.ndarray, span_s: np.ndarray) -> DriftEstimate | None:
+    """One drift from several records' own rates (``sine_gain_rate``): the inverse-variance mean, its sigma
+    1/sqrt(sum w) per part scaled by the Birge ratio when the records disagree (chi^2 with 2(n-1) dof)."""
+    rho, sigma, span_s = (np.asarray(a) for a in (rho, sigma, span_s))
+    ok = np.isfinite(rho) & np.isfinite(sigma) & (sigma > 0)
+    if not ok.any():
+        return None
+    w = 1.0 / sigma[ok] ** 2
+    mean = complex(np.sum(w * rho[ok]) / np.sum(w))
+    dof = 2 * (int(ok.sum()) - 1)
+    birge = float(np.sqrt(np.sum(w * np.abs(rho[ok] - mean) ** 2) / dof * 2)) if dof > 0 else 1.0
+    return DriftEstimate(mean, float(max(birge, 1.0) / np.sqrt(np.sum(w))), float(np.max(span_s[ok])), 1, int(ok.sum()), birge)
 
 
 def _amplitude_and_var(t: np.ndarray, x: np.ndarray, f: float, trend: int = 2) -> tuple[complex, float]:

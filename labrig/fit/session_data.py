@@ -19,6 +19,7 @@ from labrig.errors import BadInput
 from labrig.estimate import (
     BlaEstimate,
     DriftEstimate,
+    combine_rates,
     ForceTrend,
     SineEstimate,
     excited_bins_from_drive,
@@ -26,6 +27,7 @@ from labrig.estimate import (
     gain_drift,
     multisine_bla,
     sine_estimate,
+    sine_gain_rate,
     sine_segment_gains,
     template_gains,
 )
@@ -64,7 +66,7 @@ class PressureData:
     bla: BlaEstimate | None = None  # multisine BLA (the design with the most realisations x periods)
     blas: list[BlaEstimate] = field(default_factory=list)  # every multisine design at this pressure (e.g. per amplitude)
     # drift estimates by source: "multisine/realisations", "multisine/periods" (within records), "sine/within"
-    # (first vs second half of each sine record), "sine/repeats" and "step/repeats" (identical records repeated)
+    # (each sine record's own rate of change, combined), "sine/repeats" and "step/repeats" (identical records repeated)
     drift: dict[str, DriftEstimate] = field(default_factory=dict)
 
     def of_kind(self, kind: str) -> list[TimeRecord]:
@@ -263,41 +265,48 @@ def _sine_skip(r: TimeRecord) -> float:
 
 def _add_drift(b: PressureData) -> None:
     """Drift of the gains at this pressure, from every source the records allow (see PressureData.drift)."""
-    est: dict[str, DriftEstimate | None] = {}
-    if b.bla is not None:
-        e = b.bla
-        R, P, L = e.G_disp_rp.shape
-        if R > 1:  # realisation means against record time (nonlinear scatter is absorbed by the Birge ratio)
-            est["multisine/realisations"] = gain_drift(e.t_rp.mean(1), e.G_disp_rp.mean(1), e.var_disp_p / P)
-        if P > 1:  # periods within each record: same phases, so the same distortion: noise only
-            t = np.repeat(e.t_rp[:, :, None], L, axis=2).transpose(1, 0, 2).reshape(P, R * L)
-            var = np.broadcast_to(e.var_disp_p[None], (P, R, L)).reshape(P, R * L)
-            est["multisine/periods"] = gain_drift(t, e.G_disp_rp.transpose(1, 0, 2).reshape(P, R * L), var)
-    sines = [r for r in b.records if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta]
-    within, repeats = [], {}
-    for r in sines:
-        f = float(r.meta["frequency_Hz"])
-        tm, g, var = sine_segment_gains(r.t, r.v, r.d, f, _sine_skip(r), segments=2)
-        if g.size == 2:
-            within.append((r.t_start + tm, g, var))
-        repeats.setdefault((r.kind, f, r.meta.get("amplitude_V")), []).append(r)
-    if within:
-        est["sine/within"] = gain_drift(*_stack(within))
-    cols = []
-    for recs in repeats.values():
-        if len(recs) > 1:
-            per = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), _sine_skip(r), segments=1) for r in recs]
-            cols.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm, g, var) for r, (tm, g, var) in zip(recs, per)])))
-    if cols:
-        est["sine/repeats"] = gain_drift(*_stack(cols))
-    steps: dict[tuple, list[TimeRecord]] = {}
-    for r in b.of_kind("step"):
-        steps.setdefault(tuple(r.meta.get(k) for k in ("amplitude_V", "on_s", "off_s", "pre_s")), []).append(r)
-    cols = []
-    for recs in steps.values():
-        if len(recs) > 1:
-            g, var = template_gains([r.d for r in recs])
-            cols.append((np.array([r.t_start + np.mean(r.t) - r.t[0] for r in recs]), g.astype(complex), var))
-    if cols:
-        est["step/repeats"] = gain_drift(*_stack(cols))
+    est = {**_multisine_drift(b.bla), **_sine_drift(b.records), **_step_drift(b.of_kind("step"))}
     b.drift = {k: v for k, v in est.items() if v is not None}
+
+
+def _multisine_drift(e: BlaEstimate | None) -> dict[str, DriftEstimate | None]:
+    if e is None:
+        return {}
+    R, P, L = e.G_disp_rp.shape
+    out = {}
+    if R > 1:  # realisation means against record time (nonlinear scatter is absorbed by the Birge ratio)
+        out["multisine/realisations"] = gain_drift(e.t_rp.mean(1), e.G_disp_rp.mean(1), e.var_disp_p / P)
+    if P > 1:  # periods within each record: same phases, so the same distortion: noise only. Lines x records as columns
+        t = np.repeat(e.t_rp[:, :, None], L, axis=2).transpose(1, 0, 2).reshape(P, R * L)
+        var = np.broadcast_to(e.var_disp_p[None], (P, R, L)).reshape(P, R * L)
+        out["multisine/periods"] = gain_drift(t, e.G_disp_rp.transpose(1, 0, 2).reshape(P, R * L), var)
+    return out
+
+
+def _sine_drift(records: list[TimeRecord]) -> dict[str, DriftEstimate | None]:
+    """The gain's rate of change within each sine record (all records' rates combined); and identical sine
+    records (kind, f, amplitude) repeated."""
+    within, groups = [], {}
+    for r in records:
+        if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta:
+            f = float(r.meta["frequency_Hz"])
+            within.append(sine_gain_rate(r.t, r.v, r.d, f, _sine_skip(r)))
+            groups.setdefault((r.kind, f, r.meta.get("amplitude_V")), []).append(r)
+    repeats = []
+    for recs in (g for g in groups.values() if len(g) > 1):
+        whole = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), _sine_skip(r), segments=1) for r in recs]
+        repeats.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm, g, var) for r, (tm, g, var) in zip(recs, whole)])))
+    return {"sine/within": combine_rates(*(np.array(c) for c in zip(*within))) if within else None,
+            "sine/repeats": gain_drift(*_stack(repeats)) if repeats else None}
+
+
+def _step_drift(steps: list[TimeRecord]) -> dict[str, DriftEstimate | None]:
+    """Identical step records (amplitude, on, off, pre) repeated: each one's scale onto their mean."""
+    groups: dict[tuple, list[TimeRecord]] = {}
+    for r in steps:
+        groups.setdefault(tuple(r.meta.get(k) for k in ("amplitude_V", "on_s", "off_s", "pre_s")), []).append(r)
+    cols = []
+    for recs in (g for g in groups.values() if len(g) > 1):
+        g, var = template_gains([r.d for r in recs])
+        cols.append((np.array([r.t_start + np.mean(r.t) - r.t[0] for r in recs]), g.astype(complex), var))
+    return {"step/repeats": gain_drift(*_stack(cols)) if cols else None}
