@@ -197,12 +197,19 @@ class SessionReader:
         return [self._record(g) for g in self._step_groups()]
 
     def step(self, step: int | str | StepRecord) -> StepRecord:
-        """A step by index, by name or from a record."""
-        key = step.index if isinstance(step, StepRecord) else step
-        for g in self._step_groups():
-            if (isinstance(key, str) and st.text(g.attrs["name"]) == key) or (not isinstance(key, str) and int(g.attrs["index"]) == key):
-                return self._record(g)
-        raise KeyError(f"{self.path}: no step {step!r}")
+        """A step by index, by name or from a record (re-read: rows and status as they are now)."""
+        if isinstance(step, StepRecord):
+            return self._record(self._entry.file[step.group])
+        # the plan lays out every step group at the start, so the lookup table is built once
+        table = getattr(self, "_step_table", None)
+        if table is None or step not in table:
+            table = {}
+            for g in self._step_groups():
+                table[int(g.attrs["index"])] = table[st.text(g.attrs["name"])] = g.name
+            self._step_table = table
+        if step not in table:
+            raise KeyError(f"{self.path}: no step {step!r}")
+        return self._record(self._entry.file[table[step]])
 
     def done_steps(self) -> list[int]:
         return [s.index for s in self.steps() if s.status in st.DONE_STATUSES]

@@ -86,13 +86,19 @@ def from_dict(data: dict[str, Any], source: str) -> LoadedProtocol:
     return _validate(name, data, source)
 
 
+def bundled() -> list[str]:
+    """Names ``labrig run`` accepts without a file: each protocol's preset, plus variants such as
+    ``paper-sweep-amplitudes`` (a preset TOML of an existing protocol)."""
+    return sorted(p.name[:-5] for p in resources.files("protocols").joinpath("presets").iterdir() if p.name.endswith(".toml"))
+
+
 def load(spec: str) -> LoadedProtocol:
     """A bundled protocol name (its preset) or the path of a TOML protocol file."""
-    if spec in PROTOCOLS:
+    if spec in bundled():
         return from_dict(tomllib.loads(preset_text(spec)), f"preset {spec}")
     path = Path(spec)
     if not path.exists():
-        raise BadInput(f"{spec}: no such protocol file (bundled protocols: {', '.join(PROTOCOLS)})")
+        raise BadInput(f"{spec}: no such protocol file (bundled protocols: {', '.join(bundled())})")
     try:
         data = tomllib.loads(path.read_text())
     except tomllib.TOMLDecodeError as exc:

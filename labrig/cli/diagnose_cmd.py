@@ -16,11 +16,11 @@ def run_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str, An
     """Diagnose a session on top of its seed-000 fit (``fitted`` from ``load_and_fit``, or made here)."""
     from labrig.cli.analysis_cmds import load_and_fit
     from labrig.diagnose.catalogue import CATALOGUE
-    from labrig.diagnose.engine import diagnose
+    from labrig.diagnose.engine import baseline_specimens, diagnose
     from labrig.store import SessionFile
 
     sd, fit = fitted or load_and_fit(path, "diagnose")
-    out = jsonable(diagnose(sd, fit.specimens))
+    out = jsonable(diagnose(sd, baseline_specimens(fit)))
     if out["cause"]:
         out["extension"] = CATALOGUE[out["cause"]].describe
     SessionFile(path).write_analysis("diagnosis", {"result_json": json.dumps(out), "verdict": out["verdict"], "cause": out["cause"] or ""})

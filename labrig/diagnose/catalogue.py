@@ -7,7 +7,7 @@ harmonic ratios, first step response, clamp force against its target, line-frequ
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
@@ -37,6 +37,7 @@ class Context:
     area: float
     length: float
     base: "Prediction | None" = None  # accepted effects so far: extensions build on it (forward selection)
+    chain: list = field(default_factory=list)  # (name, theta) of those effects, to rebuild base on new mechanics
 
 
 @dataclass
@@ -71,6 +72,7 @@ class Extension:
     hi: tuple[float, ...]
     apply: Callable[[np.ndarray, Context], Prediction]
     describe: str = ""
+    refit_mechanics: bool = False  # change the linear path's shape: fitted with alpha, gamma, K_t bar free
 
 
 def _drive(s: SineFeature) -> complex:
@@ -110,37 +112,61 @@ def _faradaic(th, ctx):
 
 
 def _play(x: np.ndarray, r: float) -> np.ndarray:
-    """Play (backlash) operator of half-width r, starting at 0."""
+    """Play (backlash) operator of half-width r, starting at 0, along the last axis (rows independent).
+
+    y_k = clip(y_{k-1}, x_k - r, x_k + r). A drive that stays inside the band leaves y unchanged, so only
+    the samples where the band moves past y are walked one by one (a step drive is a few hundred of them).
+    """
+    x = np.atleast_2d(np.asarray(x, float))
     y = np.empty_like(x)
-    prev = 0.0
-    for k, v in enumerate(x):
-        prev = min(max(prev, v - r), v + r)
-        y[k] = prev
+    prev = np.zeros(x.shape[0])
+    lo, hi = x - r, x + r
+    for k in range(x.shape[1]):
+        prev = np.minimum(np.maximum(prev, lo[:, k]), hi[:, k])
+        y[:, k] = prev
     return y
 
 
-def _play_df(a: float, r: float) -> tuple[complex, complex]:
-    """Describing function of the play operator at amplitude a: fundamental and 3rd harmonic gains."""
-    th = np.linspace(0, 2 * np.pi, 257)[:-1]
-    x = a * np.cos(th)
-    y = _play(np.tile(x, 2), r)[th.size :]  # second cycle: periodic state
-    c = np.fft.rfft(y) / th.size * 2
-    return complex(c[1] / a), complex(c[3] / a)
+_TH = np.linspace(0, 2 * np.pi, 257)[:-1]
+
+
+def _play_df(a: np.ndarray, r: float) -> tuple[np.ndarray, np.ndarray]:
+    """Describing function of the play operator at amplitudes a: fundamental and 3rd harmonic gains."""
+    a = np.atleast_1d(np.asarray(a, float))
+    x = a[:, None] * np.cos(_TH)[None, :]
+    rr = np.minimum(r, 0.99 * a)[:, None]
+    # second cycle: the periodic state (rows have their own band, so shift instead of one r)
+    xx = np.tile(x, 2)
+    y = np.empty_like(xx)
+    prev = np.zeros(a.size)
+    for k in range(xx.shape[1]):
+        prev = np.minimum(np.maximum(prev, xx[:, k] - rr[:, 0]), xx[:, k] + rr[:, 0])
+        y[:, k] = prev
+    c = np.fft.rfft(y[:, _TH.size :], axis=1) / _TH.size * 2
+    return c[:, 1] / a, c[:, 3] / a
 
 
 def _hysteresis(th, ctx):
     w, r, gain = th
     p = baseline(ctx)
     # gain refitted: the baseline's alpha already took in the average loss of gain the hysteresis causes
-    for k, s in enumerate(ctx.sines):
-        a = abs(_drive(s))
-        n1, n3 = _play_df(a, min(r, 0.99 * a))
+    if ctx.sines:
+        drv = np.array([_drive(s) for s in ctx.sines])
+        a = np.abs(drv)
+        n1, n3 = _play_df(a, r)
         g1 = (1 - w) + w * n1
-        p.Hd[k] = p.Hd[k] * g1 * gain
-        p.hd[k, 1] = w * n3 * ctx.Hd3[k] / (g1 * ctx.Hd[k]) * (_drive(s) / a) ** 2
+        p.Hd = p.Hd * g1 * gain
+        p.hd[:, 1] = w * n3 * ctx.Hd3 / (g1 * ctx.Hd) * (drv / a) ** 2
     for k, st in enumerate(ctx.steps):
         sp = specimen_for(ctx.specimens, st.pressure_kPa)
-        veff = (1 - w) * st.v_full + w * _play(st.v_full, r)
+        # the play runs on the 50 Hz block means the step is compared at: at full rate it would walk 30,000
+        # samples per call, and the band only moves at the step's edges
+        q = st.q
+        n = (st.v_full.size // q) * q
+        vb = st.v_full[:n].reshape(-1, q).mean(axis=1)
+        yb = _play(vb, r)[0]
+        played = np.r_[np.repeat(yb, q), np.full(st.v_full.size - n, yb[-1] if yb.size else 0.0)]
+        veff = (1 - w) * st.v_full + w * played
         p.step_d[k] = gain * predict_step(sp, st, veff)[0]
     return p
 
@@ -156,16 +182,24 @@ def _time_delay(th, ctx):
 
 
 def _sensor_offset(th, ctx):
-    xi, gain = th
+    (xi,) = th
     p = baseline(ctx)
-    # the baseline fit already scaled alpha to the measured gain: only the shape (zeros) is left to explain
-    for k, s in enumerate(ctx.sines):
-        sp = specimen_for(ctx.specimens, s.pressure_kPa)
-        p.Hd[k] = gain * transfer.frf(np.array([s.f]), sp.with_(sensor_x=min(xi, 1.0) * ctx.length))[0]
+    # gain, damping and K_t bar are refitted with it (MECH_REFIT): the baseline fit bent them towards the
+    # moved zeros, so x_m is judged on the linear path's shape, with the poles free to sit where they are
+    at = {q: sp.with_(sensor_x=min(xi, 1.0) * ctx.length) for q, sp in ctx.specimens.items()}
+    p.Hd = frf_by_pressure(ctx.sines, at)
     for k, st in enumerate(ctx.steps):
-        sp = specimen_for(ctx.specimens, st.pressure_kPa).with_(sensor_x=min(xi, 1.0) * ctx.length)
-        p.step_d[k] = gain * predict_step(sp, st)[0]
+        p.step_d[k] = predict_step(specimen_for(at, st.pressure_kPa), st)[0]
     return p
+
+
+def frf_by_pressure(sines: list[SineFeature], specimens: dict[float, Specimen]) -> np.ndarray:
+    """Displacement FRF at each sine's frequency with its pressure's specimen (one modal set per pressure)."""
+    out = np.zeros(len(sines), complex)
+    for q in {s.pressure_kPa for s in sines}:
+        idx = [k for k, s in enumerate(sines) if s.pressure_kPa == q]
+        out[idx] = transfer.frf(np.array([sines[k].f for k in idx]), specimen_for(specimens, q))
+    return out
 
 
 def _clamp_relaxation(th, ctx):
@@ -238,8 +272,8 @@ CATALOGUE: dict[str, Extension] = {
         Extension("back_relaxation", ("K2", "tau2_s"), (0.5, 10.0), (-0.5, 0.2), (2.5, 300.0), _back_relaxation, "H(s)(1 - K2/(tau2 s + 1)): a slow opposing flux"),
         Extension("faradaic_current", ("g1_S", "g3_S_per_V2"), (0.0, 0.0), (-0.05, -0.05), (0.05, 0.05), _faradaic, "parallel odd-polynomial conductance i = g1 v + g3 v^3"),
         Extension("hysteresis", ("weight", "play_V", "gain"), (0.2, 0.05, 1.0), (0.0, 1e-3, 0.2), (1.0, 1.0, 5.0), _hysteresis, "Prandtl-Ishlinskii play operator on the drive (gain refitted)"),
-        Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel"),
-        Extension("sensor_offset", ("x_over_L", "gain"), (0.9, 1.0), (0.3, 0.2), (1.0, 5.0), _sensor_offset, "laser spot at x_m < L: read w(x_m) (gain refitted)"),
+        Extension("time_delay", ("tau_s",), (0.005,), (-0.2, ), (0.2,), _time_delay, "exp(-s tau) on the displacement channel (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
+        Extension("sensor_offset", ("x_over_L",), (0.85,), (0.3,), (1.0,), _sensor_offset, "laser spot at x_m < L: read w(x_m) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
         Extension("clamp_relaxation", ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent"), (0.05, 500.0, 1.0, 0.0), (-0.2, 20.0, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0), _clamp_relaxation, "clamp force creeps, F = F0 (1 - r (1 - exp(-t/tau))); K_t bar and gain follow it"),
         Extension("dehydration", ("gain_decay_per_s", "conductance_decay_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-2, 1e-2), _dehydration, "gain and conductance decay with time"),
         Extension("strain_resistance", ("c2", "c2_current"), (0.0, 0.0), (-5.0, -5.0), (5.0, 5.0), _strain_resistance, "quadratic (even) output term from curvature-dependent electrode resistance"),

@@ -16,6 +16,7 @@ import numpy as np
 from labrig.diagnose import engine
 from labrig.diagnose.catalogue import CATALOGUE, Context, baseline
 from labrig.diagnose.features import Features, extract
+from labrig.diagnose.nuisance import with_fitted_mechanics
 from labrig.fit.session_data import SessionData
 
 BLOCK_TITLES = {
@@ -147,7 +148,8 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
     theta = np.array([float(ext_info["params"][p]) for p in ext.params])
     ctx, held, same = heldout_context(sd, specimens, feats)
     before = engine.blocks(baseline(ctx), ctx)
-    after = engine.blocks(ext.apply(theta, ctx), ctx)
+    after_ctx = with_fitted_mechanics(ctx, ext_info["params"])  # refitted extensions carry their mechanics
+    after = engine.blocks(ext.apply(theta, after_ctx), after_ctx)
     out = []
     for key, (b, _) in before.items():
         a = after.get(key, (np.full(b.shape, np.nan), None))[0]

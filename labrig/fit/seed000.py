@@ -87,6 +87,10 @@ class Seed000Fit:
     frf_excess_rel: float | None = None  # relative FRF error beyond the points' noise, from the FRF
     elapsed_s: float = 0.0
     specimens: dict[float, Specimen] = field(default_factory=dict)  # the fitted strip per pressure
+    # the strip from the stages alone: electrical values from the spectra, mechanics from the FRF with those
+    # held. A misfit of the displacement path cannot bend the electrical values here (the joint fit's R_cont
+    # can), so the diagnosis judges each channel against a baseline told by that channel.
+    staged_specimens: dict[float, Specimen] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         def pe(x: ParamEstimate | None) -> float | None:
@@ -235,11 +239,13 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
     if with_eis:
         res, fit.eis_noise_rel = fit_impedance(with_eis, priors)
         final = res.params
+        fit.staged_specimens = _specimens(priors, final)
     else:
         fit.notes.append("no impedance spectrum: contact resistance and Table 1 values cannot be told (null)")
     if with_frf:
         electrical = final if final is not None else _prior_electrical(priors)
         pars = fit_frf(with_frf, priors, electrical)
+        fit.staged_specimens = _specimens(priors, pars)
         if with_eis:
             pars = joint_params(with_eis, with_frf, final, pars)
         problem = Problem(priors, eis=with_eis, frf=with_frf, sigma_eis=fit.eis_noise_rel or 1.0)
@@ -262,6 +268,11 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
             held += "; R_cont held too (the spectrum cannot tell it from the CPE resistances without an FRF): R_cont_ohm null"
         fit.notes.append(held)
     return final
+
+
+def _specimens(priors: dict[float, Specimen], pars: lmfit.Parameters) -> dict[float, Specimen]:
+    problem, v = Problem(priors), pars.valuesdict()
+    return {p: problem.specimen(v, p) for p in priors}
 
 
 def _prior_electrical(priors: dict[float, Specimen]) -> lmfit.Parameters:

@@ -92,7 +92,9 @@ def _diagnosis(data: ReportData, recompute: bool) -> None:
         data.diagnosis = run_diagnosis(data.path, (data.sd, data.fit))
         data.diagnosis_source = "computed for this report (and stored in the session)"
     try:
-        data.residuals = heldout_residuals(data.sd, data.fit.specimens, data.diagnosis, data.feats)
+        from labrig.diagnose.engine import baseline_specimens
+
+        data.residuals = heldout_residuals(data.sd, baseline_specimens(data.fit), data.diagnosis, data.feats)
     except (KeyError, ValueError) as exc:  # a stored diagnosis from another catalogue version
         data.missing["residuals"] = f"The held-out residuals could not be rebuilt from the stored diagnosis ({exc}); rerun with --recompute."
     if data.residuals is None and "residuals" not in data.missing:
