@@ -1,4 +1,4 @@
-"""The diagnosis on simulated paper sweeps with hidden effects, on a clean bench, and on imported data."""
+"""The diagnosis: two hidden effects at once, imported data, bad input (coverage over the catalogue: test_diagnose_coverage.py)."""
 
 import json
 import subprocess
@@ -21,32 +21,13 @@ def _sweep(tmp_path, scenario, seed):
     return path
 
 
-def test_clean_bench_is_none_and_the_json_contract_holds(tmp_path):
-    path = _sweep(tmp_path, "none", 3)
+def test_two_hidden_effects_are_both_named_and_the_result_is_stored(tmp_path):
+    path = _sweep(tmp_path, "back_relaxation+mains_pickup", 3)
     out = run_diagnosis(path)
-    assert out["verdict"] == "none" and out["cause"] is None
-    for c in out["candidates"]:
-        assert {"name", "delta_bic", "heldout_nrmse"} <= set(c)
-    assert {c["name"] for c in out["candidates"]} == set(scenarios.names()) - {"none"}
-    assert "heldout_nrmse" in out["baseline"]
-    assert {"heldout_nrmse", "params"} <= set(out["extended"])
-    assert {"heldout_nrmse_ratio", "delta_bic"} <= set(out["gain"])
-    json.dumps(out)
-    assert json.loads(SessionFile(path).read_analysis("diagnosis")["result_json"])["verdict"] == "none"
-
-
-def test_two_hidden_effects_are_both_named(tmp_path):
-    out = run_diagnosis(_sweep(tmp_path, "back_relaxation+mains_pickup", 3))
     assert out["verdict"] == "effect"
     assert set(out["effects"][:2]) == {"back_relaxation", "mains_pickup"}
-
-
-def test_faradaic_current_is_found_and_its_extension_halves_the_heldout_error(tmp_path):
-    out = run_diagnosis(_sweep(tmp_path, "faradaic_current", 3))
-    assert out["verdict"] == "effect" and out["cause"] == "faradaic_current"
-    assert out["gain"]["heldout_nrmse_ratio"] < 0.5
-    assert out["gain"]["delta_bic"] < -25
-    assert out["split"]["fit"] != out["split"]["heldout"]  # scored on other pressures than fitted
+    stored = json.loads(SessionFile(path).read_analysis("diagnosis")["result_json"])
+    assert stored["cause"] == out["cause"] and stored["effects"] == out["effects"]
 
 
 def test_imported_data_is_diagnosed_like_a_session(tmp_path):

@@ -1,0 +1,75 @@
+"""How often the diagnosis names a hidden effect: sweeps on the simulated bench, end to end.
+
+Each case runs a protocol on the simulated bench with one scenario of ``mock_devices.scenarios`` (strengths
+drawn from the seed), writes the session file, fits it and diagnoses it, exactly as
+``labrig run PROTOCOL --sim --scenario NAME --seed N --fit --diagnose`` does. Used by the coverage test and by
+``bench/diagnose.py``; cases run in parallel processes (the truth stays in the worker that ran the bench).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import time
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+
+
+@dataclass(frozen=True)
+class CaseResult:
+    scenario: str
+    seed: int
+    verdict: str
+    cause: str | None
+    effects: list[str]
+    heldout_ratio: float  # of the named (or best) extension
+    delta_bic: float
+    diagnose_s: float  # wall time of fit + diagnosis, as `labrig diagnose` spends it
+    output: dict = field(default_factory=dict, repr=False)  # the whole `labrig diagnose --json` object
+
+    @property
+    def answer(self) -> str:
+        """What the diagnosis said, in the scenario's terms: the cause's name, or the verdict."""
+        return self.cause if self.verdict == "effect" and self.cause else self.verdict
+
+    @property
+    def right(self) -> bool:
+        return self.answer == self.scenario
+
+
+def run_case(args: tuple[str, int, str, str]) -> CaseResult:
+    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
+    name, seed, folder, protocol = args
+    from labrig.cli.diagnose_cmd import run_diagnosis
+    from labrig.session_run import RunRequest, execute
+    from mock_devices import scenarios
+
+    path = Path(folder) / f"{name.replace('+', '_')}_{seed}.h5"
+    res = execute(RunRequest(protocol, path, effects=scenarios.effects_for(name, seed), seed=seed))
+    if res.exit_code != 0:
+        raise RuntimeError(f"{name} seed {seed}: the run failed ({res.exit_code}): {getattr(res, 'reason', '')}")
+    t0 = time.perf_counter()
+    out = run_diagnosis(path)
+    return CaseResult(name, seed, out["verdict"], out["cause"], list(out["effects"]), float(out["gain"]["heldout_nrmse_ratio"]),
+                      float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out)
+
+
+def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 3) -> list[CaseResult]:
+    """Every (scenario, seed) case, ``jobs`` at a time in fresh processes (spawned: no Qt or threads inherited).
+    A simulated run spends half its wall time waiting on the bench's clock, so one more job than cores pays."""
+    ctx = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(jobs, mp_context=ctx) as pool:
+        return list(pool.map(run_case, [(n, s, str(folder), protocol) for n, s in cases]))
+
+
+def confusion(results: list[CaseResult], names: list[str]) -> str:
+    """The confusion matrix as text: hidden scenario per row, diagnosis per column."""
+    labels = names + ["unexplained"]
+    lines = [f"{'hidden \\ diagnosed':20s}" + "".join(f"{lab[:7]:>8s}" for lab in labels)]
+    for n in names:
+        row = [sum(1 for r in results if r.scenario == n and r.answer == lab) for lab in labels]
+        if sum(row):
+            lines.append(f"{n:20s}" + "".join(f"{c:8d}" for c in row))
+    right = sum(r.right for r in results)
+    lines.append(f"right: {right}/{len(results)} = {100 * right / max(len(results), 1):.0f} %")
+    return "\n".join(lines)
