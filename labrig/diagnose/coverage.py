@@ -65,7 +65,8 @@ def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = 
 def confusion(results: list[CaseResult], names: list[str]) -> str:
     """The confusion matrix as text: hidden scenario per row, diagnosis per column."""
     labels = names + ["unexplained"]
-    lines = [f"{'hidden \\ diagnosed':20s}" + "".join(f"{lab[:7]:>8s}" for lab in labels)]
+    head = 'hidden \\ diagnosed'
+    lines = [f"{head:20s}" + "".join(f"{lab[:7]:>8s}" for lab in labels)]
     for n in names:
         row = [sum(1 for r in results if r.scenario == n and r.answer == lab) for lab in labels]
         if sum(row):
