@@ -63,6 +63,8 @@ def excess_error(r: np.ndarray, noise: np.ndarray, dof: int) -> float:
         return float(np.sum(r**2 / (noise**2 + s**2))) - dof
     if dof <= 0 or excess_chi2(FRF_EXCESS_MIN) <= 0:
         return FRF_EXCESS_MIN
+    if excess_chi2(1.0) > 0:  # misfit beyond 100 %: an effect the model lacks (the diagnosis will say which)
+        return 1.0
     return float(brentq(excess_chi2, FRF_EXCESS_MIN, 1.0))
 
 
