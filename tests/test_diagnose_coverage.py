@@ -1,7 +1,7 @@
 """Issue 6's coverage on the simulated bench, end to end (run -> session file -> fit -> diagnosis): every
 catalogue effect hidden in a paper-sweep with three seeds, and the clean bench with ten seeds.
 
-All 40 sessions are made once for the module, three at a time (about 6 minutes on two cores); the bench's
+All 40 sessions are made once for the module, two at a time (about 7 minutes on two cores); the bench's
 truth stays in the worker process that ran it. bench/diagnose.py prints the same matrix as a table.
 """
 
