@@ -24,6 +24,10 @@ WEAK = {"large_deflection", "strain_resistance"}
 OVERALL, NONE = 0.85, 0.7
 
 
+# the 40 sessions are made once, in the first test's setup: the suite's per-test limit (300 s) is too short
+pytestmark = pytest.mark.timeout(1800)
+
+
 @pytest.fixture(scope="module")
 def matrix(tmp_path_factory):
     return run_cases(CASES, tmp_path_factory.mktemp("coverage"))
