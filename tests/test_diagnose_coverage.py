@@ -17,7 +17,8 @@ EFFECTS = sorted(CATALOGUE)
 CASES = [(n, s) for n in EFFECTS for s in (1, 2, 3)] + [("none", s) for s in range(1, 11)]
 # On a paper-sweep at the bench's plausible strengths these two are a few 1e-4 of the response (docs/effects.md):
 # the extension cannot halve an error that is mostly noise, and large_deflection is named in 1-2 seeds of 3.
-# Issue 6 asks for >= 95 % overall and >= 95 % `none`; measured (bench/diagnose.py, docs/diagnosis.md): 36/40
+# Issue 6 asks for >= 95 % overall and >= 95 % `none`; measured (bench/diagnose.py, docs/diagnosis.md, before the
+# held-out ratio needed to name an effect went from 0.98 to 0.95 against clean benches read as back_relaxation): 36/40
 # and 8/10. These thresholds guard what is reached, with a session's worth of margin for the bench's
 # run-to-run scatter; the issue stays open until the targets are met.
 WEAK = {"large_deflection", "strain_resistance"}

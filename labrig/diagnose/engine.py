@@ -30,7 +30,7 @@ STEP_FLOOR = 0.01  # the step's slow part rests on the CPE below the spectrum's 
 STEP_EFFECTIVE_POINTS = 50  # a step's residual samples are correlated: count them as this many
 LINE_SIGMA = 0.6
 DBIC_EFFECT = -25.0  # evidence needed to name an effect
-RATIO_EFFECT = 0.98  # and it must predict held-out records better than the baseline
+RATIO_EFFECT = 0.95  # and predict held-out records 5 % better (clean benches reach 0.97-0.98 with the staged baseline)
 CHI2_STRUCTURED = 4.0  # baseline chi2/dof above this with no explaining effect: "unexplained"
 
 
