@@ -172,28 +172,28 @@ def _fit_extension(name: str, ctx: Context) -> tuple[np.ndarray, float]:
 class _Scorer:
     """Fits and scores extensions on one round of forward selection (the reference refit made once)."""
 
-    def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_heldout: float, refit_on: tuple[Context, Context] | None):
+    def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_heldout: float, refit_mechanics: bool):
         self.ctx_fit, self.ctx_held, self.c0, self.n, self.base_heldout = ctx_fit, ctx_held, c0, n, base_heldout
-        self.refit_on = refit_on  # contexts the mechanics are refitted on (None: not this round)
+        self.refit_mechanics = refit_mechanics  # first round only: later rounds keep the accepted mechanics
         self._ref: tuple[float, float] | None = None
 
     def reference(self) -> tuple[float, float]:
         """(chi2 on the fitted half, held-out NRMSE) of the baseline with its mechanics refitted."""
         if self._ref is None:
-            r = refit(None, *self.refit_on, blocks, [])
+            r = refit(None, self.ctx_fit, self.ctx_held, blocks, [])
             c_ref = chi2(blocks(baseline(r.ctx_fit), r.ctx_fit))[0]
             self._ref = (c_ref, nrmse(blocks(baseline(r.ctx_held), r.ctx_held)))
         return self._ref
 
     def score(self, name: str) -> Candidate:
         ext = CATALOGUE[name]
-        if not (ext.refit_mechanics and self.refit_on):
+        if not (ext.refit_mechanics and self.refit_mechanics):
             th, c = _fit_extension(name, self.ctx_fit)
             h = nrmse(blocks(ext.apply(th, self.ctx_held), self.ctx_held))
             ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
             dbic = c - self.c0 + len(th) * math.log(max(self.n, 2))
             return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio)
-        r = refit(ext, *self.refit_on, blocks, _starts(name, ext))
+        r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext))
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]
         h = nrmse(blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held))
         c_ref, h_ref = self.reference()
@@ -203,8 +203,8 @@ class _Scorer:
 
 
 def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_heldout: float,
-           refit_on: tuple[Context, Context] | None = None) -> list[Candidate]:
-    scorer = _Scorer(ctx_fit, ctx_held, c0, n, base_heldout, refit_on)
+           refit_mechanics: bool = False) -> list[Candidate]:
+    scorer = _Scorer(ctx_fit, ctx_held, c0, n, base_heldout, refit_mechanics)
     return sorted((scorer.score(name) for name in names), key=lambda c: c.delta_bic)
 
 
@@ -251,7 +251,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     b_held = blocks(baseline(ctx_held), ctx_held)
     c0, n = chi2(b_fit)
     base_heldout = nrmse(b_held)
-    cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, base_heldout, refit_on=(ctx_fit, ctx_held))
+    cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, base_heldout, refit_mechanics=True)
     named = _significant(cands)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain
