@@ -147,7 +147,10 @@ def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport) -> None:
         sims = stack.enter_context(SimulatedInstruments(bench, serial_transport=transport, seed=seed))
         data = rig_file_data(sims, clock, preset)
         try:
-            Path(rig_out).write_text("# written by `labrig sim`: simulated instruments on loopback\n" + tomli_w.dumps(data))
+            # written whole then renamed: a client polling for the file never reads half of it
+            partial = Path(rig_out).with_name(Path(rig_out).name + ".partial")
+            partial.write_text("# written by `labrig sim`: simulated instruments on loopback\n" + tomli_w.dumps(data))
+            partial.replace(rig_out)
         except OSError as exc:
             raise BadInput(f"{rig_out}: cannot write ({exc.strerror})") from None
         for name, table in data["instruments"].items():
