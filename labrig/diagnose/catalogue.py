@@ -7,6 +7,7 @@ harmonic ratios, first step response, clamp force against its target, line-frequ
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -16,7 +17,6 @@ from labrig.physics import timeresp, transfer
 from labrig.diagnose.features import Features, SineFeature, StepFeature, predict_step, specimen_for
 from labrig.physics.params import Specimen
 
-D_REF = 1e-3  # m: scale of the output nonlinearities
 
 
 @dataclass
@@ -38,6 +38,7 @@ class Context:
     length: float
     base: "Prediction | None" = None  # accepted effects so far: extensions build on it (forward selection)
     chain: list = field(default_factory=list)  # (name, theta) of those effects, to rebuild base on new mechanics
+    cache: dict = field(default_factory=dict)  # what an extension precomputes once per context (it depends on the specimens only)
 
 
 @dataclass
@@ -233,15 +234,67 @@ def _dehydration(th, ctx):
     return p
 
 
+def _sensitivity(tf, sp: Specimen, k: float = 0.01):
+    """d tf / d ln R_s by central difference: how the response moves when the electrodes' resistance does."""
+    lo, hi = (sp.with_(line=dataclasses.replace(sp.line, R_s=sp.line.R_s * (1 + d))) for d in (-k, k))
+    return lambda s: (tf(s, hi) - tf(s, lo)) / (2 * k)
+
+
+def _strain_basis(ctx: Context) -> dict:
+    """What the strain-resistance extension adds per unit gauge factor, computed once per context.
+
+    Each electrode's resistance grows with its own tensile strain, e = w h / x_m^2 (uniform-curvature reading
+    of the laser), dR_A/R = G_A max(e, 0), dR_B/R = G_B max(-e, 0); to first order the response becomes
+    y = H v + eps(t) (dH/d ln R_s) v with eps = (dR_A + dR_B)/(2R). Linear in (G_A, G_B): the rectified strain
+    gives the fundamental an amplitude-dependent change, odd harmonics (G_A + G_B) and even ones (G_A - G_B).
+    Sines: harmonics 1-3 over one period of the baseline's steady state; steps: the product at the record's rate,
+    then block-averaged as the step is compared."""
+    if "strain" in ctx.cache:
+        return ctx.cache["strain"]
+    n = 64
+    th = 2 * np.pi * np.arange(n) / n
+    ph = np.exp(1j * th)
+    sines = np.zeros((len(ctx.sines), 2, 2, 3), complex)  # (sine, channel d/i, electrode A/B, harmonic 1-3)
+    for q in {s.pressure_kPa for s in ctx.sines}:
+        idx = [k for k, s in enumerate(ctx.sines) if s.pressure_kPa == q]
+        sp = specimen_for(ctx.specimens, q)
+        w = 2j * np.pi * np.array([ctx.sines[k].f for k in idx])
+        sens = (_sensitivity(transfer.displacement_tf, sp)(w), _sensitivity(transfer.admittance_tf, sp)(w))
+        scale = sp.geometry.thickness / sp.x_sensor**2
+        for j, k in enumerate(idx):
+            a = _drive(ctx.sines[k])
+            e = (ctx.Hd[k] * a * ph).real * scale
+            for c in range(2):
+                sv = (sens[c][j] * a * ph).real
+                for el, part in enumerate((np.clip(e, 0, None), np.clip(-e, 0, None))):
+                    sines[k, c, el] = 0.5 * np.fft.fft(part * sv)[1:4] * 2 / n
+    steps = []
+    for st in ctx.steps:
+        sp = specimen_for(ctx.specimens, st.pressure_kPa)
+        d, sd, si = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), _sensitivity(transfer.displacement_tf, sp),
+                                            _sensitivity(transfer.admittance_tf, sp)], st.v_full, st.fs_full)
+        e = d * sp.geometry.thickness / sp.x_sensor**2
+        parts = (np.clip(e, 0, None), np.clip(-e, 0, None))
+        steps.append(np.array([[st.decimate(0.5 * part * sv) for part in parts] for sv in (sd, si)]))  # (channel, electrode, t)
+    ctx.cache["strain"] = {"sines": sines, "steps": steps}
+    return ctx.cache["strain"]
+
+
 def _strain_resistance(th, ctx):
-    c2, c2i = th
+    g = np.asarray(th, float)
     p = baseline(ctx)
+    if not g.any():
+        return p
+    basis = _strain_basis(ctx)
     for k, s in enumerate(ctx.sines):
-        a1 = p.Hd[k] * _drive(s)
-        p.hd[k, 0] = c2 / (2 * D_REF) * a1
-        p.hi[k, 0] = c2i / (2 * D_REF) * a1
-    for k, st in enumerate(ctx.steps):
-        p.step_d[k] = p.step_d[k] + c2 * p.step_d[k] ** 2 / D_REF
+        a = _drive(s)
+        for c, (H, h) in enumerate(((p.Hd, p.hd), (p.Hi, p.hi))):
+            x1 = H[k] * a
+            x = np.array([x1, h[k, 0] * x1, h[k, 1] * x1]) + g @ basis["sines"][k, c]
+            H[k], h[k] = x[0] / a, x[1:] / x[0]
+    for k, b in enumerate(basis["steps"]):
+        p.step_d[k] = p.step_d[k] + g @ b[0]
+        p.step_i[k] = p.step_i[k] + g @ b[1]
     return p
 
 
@@ -276,7 +329,8 @@ CATALOGUE: dict[str, Extension] = {
         Extension("sensor_offset", ("x_over_L",), (0.85,), (0.3,), (1.0,), _sensor_offset, "laser spot at x_m < L: read w(x_m) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
         Extension("clamp_relaxation", ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent"), (0.05, 500.0, 1.0, 0.0), (-0.2, 20.0, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0), _clamp_relaxation, "clamp force creeps, F = F0 (1 - r (1 - exp(-t/tau))); K_t bar and gain follow it"),
         Extension("dehydration", ("gain_decay_per_s", "conductance_decay_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-2, 1e-2), _dehydration, "gain and conductance decay with time"),
-        Extension("strain_resistance", ("c2", "c2_current"), (0.0, 0.0), (-5.0, -5.0), (5.0, 5.0), _strain_resistance, "quadratic (even) output term from curvature-dependent electrode resistance"),
+        Extension("strain_resistance", ("gauge_A", "gauge_B"), (10.0, 10.0), (0.0, 0.0), (2000.0, 2000.0), _strain_resistance,
+                  "electrode resistance growing with its tensile strain: y = H v + eps(t) dH/dln R_s v (amplitude-dependent gain, even and odd harmonics)"),
         Extension("large_deflection", ("c3",), (0.0,), (-50.0,), (500.0,), _large_deflection, "projection of the arc: delta - c3 delta^3 / L^2"),
         Extension("mains_pickup", ("disp50_um", "cur50_uA", "disp60_um", "cur60_uA"), (1.0, 1.0, 1.0, 1.0), (0.0,) * 4, (1e4,) * 4, _mains, "additive 50/60 Hz line of constant amplitude"),
     )

@@ -54,7 +54,7 @@ def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dic
         mech = dataclasses.replace(m, alpha=m.alpha * math.exp(log_alpha), gamma=m.gamma * math.exp(log_gamma))
         specimens[p] = sp.with_(Kt_bar=sp.Kt_bar * math.exp(log_kt.get(p, 0.0)), mechanics=mech)
     f3 = [dataclasses.replace(s, f=3 * s.f) for s in ctx.sines]
-    new = dataclasses.replace(ctx, specimens=specimens, Hd=frf_by_pressure(ctx.sines, specimens), Hd3=frf_by_pressure(f3, specimens), base=None)
+    new = dataclasses.replace(ctx, specimens=specimens, Hd=frf_by_pressure(ctx.sines, specimens), Hd3=frf_by_pressure(f3, specimens), base=None, cache={})
     if steps:
         new.step_d = [predict_step(specimen_for(specimens, st.pressure_kPa), st)[0] for st in ctx.steps]
     else:

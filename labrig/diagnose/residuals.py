@@ -69,14 +69,15 @@ class HeldoutResiduals:
     heldout_kPa: list[float]
     same_records: bool  # one pressure only: fitted and held-out records are the same
     blocks: list[BlockResiduals]
+    missed: set[str] = field(default_factory=set)  # the blocks the baseline misses: where the held-out error is measured
 
     @property
     def nrmse_before(self) -> float:
-        return _nrmse([b.before for b in self.blocks])
+        return engine.heldout_error({b.name: b.rms_before for b in self.blocks}, self.missed)
 
     @property
     def nrmse_after(self) -> float:
-        return _nrmse([b.after for b in self.blocks])
+        return engine.heldout_error({b.name: b.rms_after for b in self.blocks}, self.missed)
 
     def evidence(self, most: int = 2) -> list[BlockResiduals]:
         """The blocks the extension fixes most: those within half of the largest improvement, best first."""
@@ -88,12 +89,6 @@ class HeldoutResiduals:
 
 def _rms(x: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.square(x)))) if x.size else float("nan")
-
-
-def _nrmse(parts: list[np.ndarray]) -> float:
-    """The engine's held-out error: RMS over blocks of each block's RMS (blocks of different size weigh alike)."""
-    per = [_rms(p) for p in parts if p.size]
-    return float(np.sqrt(np.mean(np.square(per)))) if per else float("nan")
 
 
 def _abscissa(name: str, ctx: Context, size: int) -> tuple[np.ndarray, str, bool, np.ndarray]:
@@ -158,4 +153,4 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
         x, label, log, series = _abscissa(key, ctx, b.size)
         out.append(BlockResiduals(key, b, a, x, label, log, series))
     return HeldoutResiduals(name, dict(ext_info["params"]), bool(ext_info.get("accepted", result.get("cause") == name)),
-                            sorted(p for p in held if p is not None), same, out)
+                            sorted(p for p in held if p is not None), same, out, engine.missed({b.name: b.rms_before for b in out}))

@@ -13,7 +13,8 @@ Parametrisation (named lmfit parameters; ``_<tag>`` marks a per-pressure one):
 
 Residuals: impedance as (Z_model - Z)/|Z| over the analyser's relative noise (real and imaginary parts);
 displacement FRF as the complex log of H_model/H over each point's relative standard deviation with the
-FRF's error beyond it (excess_error, at least FRF_EXCESS_MIN) added in quadrature.
+FRF's error beyond it (excess_error, at least FRF_EXCESS_MIN) added in quadrature; the DAQ's current
+admittance (electrical stage only) as (Y_model - Y)/|Y| over its relative noise with CUR_FLOOR in quadrature.
 The Jacobian is a forward difference that re-evaluates only the blocks a parameter touches.
 """
 
@@ -39,6 +40,9 @@ CLAMP_FIXED = ("R_sc", "R_pc")  # at the paper's clamp law: not told by the data
 # per-point weight can average away. The FRF's error beyond its scatter is therefore never taken below
 # 5e-4 (docs/model.md 9: with 1e-4 gamma and the CPE index come out 2-3 sigma off in every seed).
 FRF_EXCESS_MIN = 5e-4
+# The DAQ current's stepped-sine estimates scatter by ~8e-5 of |Y|; their bias against the exact admittance is
+# of the FRF's order (CPE start-up), so each point's relative error is never taken below this
+CUR_FLOOR = 5e-4
 EIS_SIGMA_FLOOR = 1e-4  # a noise-free (modelled) spectrum must not give infinite weights
 
 
@@ -75,6 +79,7 @@ class Problem:
     priors: dict[float, Specimen]  # preset / clamp law per pressure: start values and fixed values
     eis: list[PressureData] = field(default_factory=list)
     frf: list[PressureData] = field(default_factory=list)
+    cur: list[PressureData] = field(default_factory=list)  # the DAQ's current admittance (PressureData.current_lines)
     sigma_eis: float = 1.0  # analyser's relative noise per component (real, imaginary)
     frf_excess: float = FRF_EXCESS_MIN  # relative FRF error beyond the points' own noise (excess_error)
 
@@ -82,8 +87,11 @@ class Problem:
         self._eis_data = {d.pressure_kPa: d.eis for d in self.eis}
         self._frf_data = {d.pressure_kPa: d.frf_lines() for d in self.frf}  # stepped sines and multisine BLA
         self._noise = {p: np.tile(frf_noise(h, sig), 2) for p, (f, h, _, sig) in self._frf_data.items()}
-        self.blocks = [("eis", d.pressure_kPa) for d in self.eis] + [("frf", d.pressure_kPa) for d in self.frf]
-        sizes = [2 * (d.eis[0].size if k == "eis" else self._frf_data[p][0].size) for (k, p), d in zip(self.blocks, self.eis + self.frf)]
+        self._cur_data = {d.pressure_kPa: d.current_lines() for d in self.cur}
+        # current blocks last: callers index the spectra and FRF blocks from the start
+        self.blocks = [("eis", d.pressure_kPa) for d in self.eis] + [("frf", d.pressure_kPa) for d in self.frf] + [("cur", d.pressure_kPa) for d in self.cur]
+        size = {"eis": lambda p: self._eis_data[p][0].size, "frf": lambda p: self._frf_data[p][0].size, "cur": lambda p: self._cur_data[p][0].size}
+        sizes = [2 * size[k](p) for k, p in self.blocks]
         self.offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(int)
 
     # ---------------------------------------------------------------------------------- model
@@ -116,6 +124,11 @@ class Problem:
         """One pressure's impedance or FRF residuals, in units of their noise."""
         if kind == "frf":
             return self._frf_log_error(p, v) / np.sqrt(self._noise[p] ** 2 + self.frf_excess**2)
+        if kind == "cur":
+            f, h, sig = self._cur_data[p]
+            r = (transfer.admittance_tf(2j * np.pi * f, self.specimen(v, p)) - h) / np.abs(h)
+            r /= np.hypot(np.nan_to_num(sig / np.abs(h), nan=0.01) / np.sqrt(2), CUR_FLOOR)
+            return np.concatenate([r.real, r.imag])
         f, z = self._eis_data[p]
         r = (imp.impedance(2j * np.pi * f, self.specimen(v, p)) - z) / np.abs(z) / self.sigma_eis
         return np.concatenate([r.real, r.imag])
@@ -135,7 +148,7 @@ class Problem:
         """Does parameter ``name`` enter block (kind, p)? Per-pressure names only their own pressure's
         blocks; the mechanics only the FRF."""
         mech = name in ("gamma", "log_alpha") or name.startswith("log_kt_")
-        if mech and kind == "eis":
+        if mech and kind in ("eis", "cur"):
             return False
         per_p = name.startswith(("log_kt_", "R_cont_", "log_R_c_", "log_Q0c_", "n_c_"))
         return not per_p or name.endswith("_" + tag(p))

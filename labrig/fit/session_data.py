@@ -96,6 +96,21 @@ class PressureData:
         o = np.argsort(f, kind="stable")
         return f[o], hd[o], hc[o], sd[o]
 
+    def current_lines(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """The DAQ's current admittance: (f_Hz, H_cur in A/V, sigma_cur in A/V), stepped sines and the multisine
+        BLA together, ascending f; None if none. The same admittance the analyser measures, but some 15x less
+        noisy per point (8e-5 relative against 1.4e-3), so it pins what the spectrum leaves loose."""
+        parts = []
+        if self.sines:
+            parts.append((np.array([s.frequency_Hz for s in self.sines]), np.array([s.H_cur for s in self.sines]), np.array([s.cur_noise for s in self.sines])))
+        if self.bla is not None:
+            parts.append((self.bla.f_Hz, self.bla.G_cur, np.sqrt(self.bla.total_var_cur)))
+        if not parts:
+            return None
+        f, h, sig = (np.concatenate(c) for c in zip(*parts))
+        o = np.argsort(f, kind="stable")
+        return f[o], h[o], sig[o]
+
     def frf(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
         """(f, H_disp, H_cur, sigma_disp) from the stepped sines, or None."""
         if not self.sines:
