@@ -5,6 +5,14 @@ The manifest format is DESIGN.md 6. Everything is validated before anything is w
 events a measured run produces, so the fitter and the diagnosis cannot tell an import from a run.
 Every problem is a ``BadInput`` with one line naming the file, the record (1-based, in manifest order)
 or CSV line, and the problem.
+
+Time placement: drift effects (dehydration, clamp relaxation) need the time between records. When the
+CSVs share one clock (each time series starts at or after the end of the one before it, as ``labrig
+export`` writes them) each record starts at its own first ``t_s`` and its stored times count from there,
+exactly as a run stores them. Otherwise (every CSV starting at 0, say) the records are laid back to back in
+manifest order with their times as written. Spectra have no time: they sit where the time series before
+them ended. What a manifest cannot say (a step's edge, a sine's settling cycles) the fitter reads off the
+data (``labrig.fit.session_data.step_onset``, ``sine_cycles``).
 """
 
 from __future__ import annotations
@@ -229,6 +237,25 @@ def _plan(records: list[Record], tables: list[Table]) -> tuple[StepPlan, ...]:
     return tuple(steps)
 
 
+def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], bool]:
+    """Each record's start time on the session clock, and whether the CSVs' own clock gave them (see the
+    module docstring); back to back from 0 otherwise."""
+    spans = [None if rec.kind == "eis" else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
+    timed = [sp for sp in spans if sp is not None]
+    own = all(b[0] >= a[1] for a, b in zip(timed, timed[1:]))
+    starts, cursor = [], timed[0][0] if own and timed else 0.0
+    for sp in spans:
+        start = cursor if sp is None or not own else sp[0]
+        starts.append(start)
+        cursor = start + (0.0 if sp is None else sp[1] - sp[0])
+    return starts, own
+
+
+def _from_start(tab: Table) -> dict[str, np.ndarray]:
+    """The columns with ``t_s`` counted from the record's first sample (its step start)."""
+    return {**tab.columns, "t_s": tab.columns["t_s"] - tab.columns["t_s"][0]}
+
+
 def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = False) -> Path:
     """Validate the manifest and its CSVs, then write the session file ``out``; returns its path."""
     mpath = Path(manifest)
@@ -238,6 +265,7 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
     if out.exists() and not overwrite:
         raise BadInput(f"{out}: already exists (use --force to overwrite)")
     steps = _plan(m.record, tables)
+    starts, own = placement(m.record, tables)
     from labrig.store_writer import SessionWriter  # heavy (h5py): only once the input is known good
 
     uid = new_uid()
@@ -246,18 +274,18 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
     try:
         w(RunStart(uid=uid, protocol=f"import:{mpath.name}", config={"manifest": str(mpath.resolve()), **raw},
                    rig={"source": "import", "manifest": str(mpath.resolve())}, sample=m.specimen.model_dump(),
-                   software={"labrig": __version__, "python": sys.version.split()[0]}, steps=steps, t=0.0))
-        t0 = 0.0
-        for plan, tab in zip(steps, tables):
+                   software={"labrig": __version__, "python": sys.version.split()[0]}, steps=steps, t=starts[0]))
+        t1 = starts[0]
+        for plan, tab, t0 in zip(steps, tables, starts):
             w(StepStart(uid, plan.index, t0))
+            data = _from_start(tab) if own and plan.kind != "eis" else tab.columns
             for spec in plan.streams:
                 cols = [c.name for c in spec.columns]
                 for a in range(0, tab.rows, BLOCK_ROWS):
-                    w(Block(uid, plan.index, spec.name, {c: tab.columns[c][a:a + BLOCK_ROWS] for c in cols}, seq=a))
+                    w(Block(uid, plan.index, spec.name, {c: data[c][a:a + BLOCK_ROWS] for c in cols}, seq=a))
             t1 = t0 + plan.metadata.get("duration_s", 0.0)
             w(StepEnd(uid, plan.index, "done", t1, {"rows": tab.rows, "source_file": str(tab.path)}))
-            t0 = t1
-        w(RunStop(uid, "success", f"imported from {mpath.name}", t0))
+        w(RunStop(uid, "success", f"imported from {mpath.name}", t1))
     except BaseException:
         w.close()
         tmp.unlink(missing_ok=True)

@@ -1,4 +1,5 @@
-"""``labrig inspect`` (what a session holds, what is incomplete) and ``labrig import`` (CSV manifest -> session)."""
+"""``labrig inspect`` (what a session holds, what is incomplete), ``labrig import`` (CSV manifest -> session) and
+``labrig export`` (session -> CSV manifest, the inverse)."""
 
 from __future__ import annotations
 
@@ -109,7 +110,22 @@ def import_cmd(manifest: str, out: str, force: bool) -> None:
     click.echo(f"wrote {len(s['steps'])} records ({rows} rows) to {path}")
 
 
+@click.command("export")
+@click.argument("session", type=click.Path(dir_okay=True))
+@click.option("--out", "out_dir", required=True, type=click.Path(file_okay=True), help="directory for manifest.toml and the CSVs")
+@click.option("--force", is_flag=True, help="write into --out even if it is not empty")
+def export_cmd(session: str, out_dir: str, force: bool) -> None:
+    """A session's records as an import manifest and CSV files (DESIGN.md 6): ``labrig import`` reads them back."""
+    from labrig.exporter import export_session
+
+    done = export_session(session, out_dir, overwrite=force)
+    for note in done.notes:
+        click.echo(f"note: {note}")
+    click.echo(f"wrote {done.records} records ({done.rows} rows) to {done.manifest.parent}; read back with: labrig import {done.manifest} --out FILE.h5")
+
+
 def register(app: click.Group) -> None:
-    """Add ``inspect`` and ``import`` to the ``labrig`` group."""
+    """Add ``inspect``, ``import`` and ``export`` to the ``labrig`` group."""
     app.add_command(inspect_cmd)
     app.add_command(import_cmd)
+    app.add_command(export_cmd)

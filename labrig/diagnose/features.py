@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from labrig.estimate import SineEstimate, sine_estimate
-from labrig.fit.session_data import SessionData, TimeRecord
+from labrig.fit.session_data import SessionData, TimeRecord, sine_cycles, step_onset
 from labrig.physics import timeresp, transfer
 from labrig.physics.params import Specimen
 
@@ -141,14 +141,13 @@ def extract(sd: SessionData) -> Features:
         slope, fmean, slope_sigma = _force_slope(r)
         if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta:
             f = float(r.meta["frequency_Hz"])
-            est = sine_estimate(r.t, r.v, r.i, r.d, f, float(r.meta.get("settle_cycles", 0.0) or 0.0), float(r.meta.get("cycles", 0) or 0) or None)
+            est = sine_estimate(r.t, r.v, r.i, r.d, f, *sine_cycles(r))
             amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
             feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma))
         elif r.kind == "step" and p not in first_step:
             first_step.add(p)
             q, (t, v, d, i) = _decimate(r, STEP_RATE_HZ)
-            t_on = float(r.meta.get("pre_s", 0.0))
-            pre = r.t < t_on
+            pre = r.t < step_onset(r)
             nd = float(np.std(r.d[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
             ni = float(np.std(r.i[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))

@@ -26,7 +26,7 @@ import numpy as np
 from labrig.estimate import step_metrics
 from labrig.fit import seed000_problem as sp000
 from labrig.fit.seed000_problem import LINE_NAMES, Problem, clamp_name, tag
-from labrig.fit.session_data import PressureData, SessionData
+from labrig.fit.session_data import PressureData, SessionData, step_offset, step_onset
 from labrig.physics import presets, transfer
 from labrig.physics.clamp import ClampLaw
 from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen
@@ -230,10 +230,8 @@ def _measured_actuation(d: PressureData) -> tuple[float | None, float | None]:
     steps = d.of_kind("step")
     if steps:
         r = steps[0]
-        md = r.meta
-        t_on = float(md.get("pre_s", 0.0))
-        m = step_metrics(r.t, r.v, r.d, t_on, t_on + float(md.get("on_s", r.t[-1])))
-        peak = m.peak_m / max(abs(float(md.get("amplitude_V", 1.0))), 1e-12)
+        m = step_metrics(r.t, r.v, r.d, step_onset(r), step_offset(r))
+        peak = m.peak_m / max(abs(float(r.meta.get("amplitude_V", 1.0))), 1e-12)
     harm = None
     hs = d.of_kind("harmonic")
     if hs:

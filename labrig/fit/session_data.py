@@ -3,12 +3,15 @@
 Finished steps only; each record grouped by its clamping pressure. Bad data (NaN, too short) is left out
 with a note rather than crashing the fit. Per pressure: the stepped-sine estimates, the multisine BLA,
 the FRF lines the fitter uses (``PressureData.frf_lines``) and the drift between and within records
-(docs/estimation.md).
+(docs/estimation.md). Where a record's layout (a step's edges, a sine's settling cycles) is read, it is read
+through ``step_onset``/``step_offset``/``sine_cycles``: the runner's metadata, or for an import, which cannot
+say it, the record itself.
 """
 
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -131,6 +134,58 @@ class SessionData:
         return [r for p in self.pressures for r in p.records] + self.unpressured
 
 
+# ------------------------------------------------------------------------------------------ record layout
+# The runner's metadata says where a step's drive switches and how many cycles of a sine settle; an import's
+# manifest cannot (DESIGN.md 6), so for imports these are read off the record. Every reader goes through here.
+
+
+def _drive_edges(r: TimeRecord) -> tuple[float, float]:
+    """(rising, falling) edge of a step drive, s of record time: the first sample where |v - v[0]| exceeds half
+    the step (``amplitude_V``, or the drive's largest excursion if smaller or unknown), and the first after it
+    back below; (t[0], inf) for a flat drive, inf for a drive that never returns."""
+    dv = np.abs(np.asarray(r.v, float) - float(r.v[0]))
+    amp = float(dv.max())
+    if r.meta.get("amplitude_V"):
+        amp = min(amp, abs(float(r.meta["amplitude_V"])))
+    if not amp > 0:
+        return float(r.t[0]), math.inf
+    above = dv > 0.5 * amp
+    on = int(np.argmax(above))
+    back = ~above[on:]
+    return float(r.t[on]), float(r.t[on + int(np.argmax(back))]) if back.any() else math.inf
+
+
+def step_onset(r: TimeRecord) -> float:
+    """When a step record's drive switches on (s of record time): the runner's ``pre_s``, else read off the drive."""
+    if r.meta.get("pre_s") is not None:
+        return float(r.meta["pre_s"])
+    return _drive_edges(r)[0]
+
+
+def step_offset(r: TimeRecord) -> float:
+    """When it switches off: onset + the runner's ``on_s``, else read off the drive (inf if it never does)."""
+    if r.meta.get("on_s") is not None:
+        return step_onset(r) + float(r.meta["on_s"])
+    return _drive_edges(r)[1]
+
+
+def sine_cycles(r: TimeRecord) -> tuple[float, float | None]:
+    """(cycles to skip, cycles to use or None for every whole cycle after them) of a sine record.
+
+    The runner's ``settle_cycles`` and ``cycles`` when it says them. An import cannot: a stepped sine then
+    skips the first third of its whole cycles (the runner's design at its low frequencies: 2 settling + 4
+    measured), a harmonic none (the runner's harmonic records have no settling cycles)."""
+    m = r.meta
+    cycles = float(m["cycles"]) if m.get("cycles") else None
+    if m.get("settle_cycles") is not None:
+        return float(m["settle_cycles"]), cycles
+    if r.kind == "stepped_sine" and m.get("frequency_Hz"):
+        # + 0.01: a record of n cycles may end a rounding error short of n
+        whole = math.floor((r.t[-1] - r.t[0]) * float(m["frequency_Hz"]) + 0.01)
+        return float(round(whole / 3)), cycles
+    return 0.0, cycles
+
+
 def _finite(*arrays: np.ndarray) -> bool:
     return all(a.size > 0 and np.all(np.isfinite(a)) for a in arrays)
 
@@ -177,8 +232,7 @@ def load_session(path: str | Path) -> SessionData:
                 continue
             bucket.records.append(rec)
             if st.kind == "stepped_sine":
-                md = st.metadata
-                bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(md["frequency_Hz"]), float(md.get("settle_cycles", 0.0)), float(md.get("cycles", 0)) or None))
+                bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(st.metadata["frequency_Hz"]), *sine_cycles(rec)))
     for b in by_p.values():
         b.sines.sort(key=lambda s: s.frequency_Hz)
         _add_multisine(b, notes)
@@ -274,8 +328,9 @@ def _stack(columns: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np
 
 
 def _sine_skip(r: TimeRecord) -> float:
-    """Cycles to skip: the stepped sine's settling cycles, one cycle of a harmonic record."""
-    return float(r.meta.get("settle_cycles", 0.0)) or (1.0 if r.kind == "harmonic" else 0.0)
+    """Cycles to skip for a rate of change: the settling cycles, at least one cycle of a harmonic record (its
+    start transient would read as drift)."""
+    return sine_cycles(r)[0] or (1.0 if r.kind == "harmonic" else 0.0)
 
 
 def _add_drift(b: PressureData) -> None:
