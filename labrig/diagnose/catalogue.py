@@ -240,6 +240,12 @@ def _sensitivity(tf, sp: Specimen, k: float = 0.01):
     return lambda s: (tf(s, hi) - tf(s, lo)) / (2 * k)
 
 
+def _gauge_strain(disp: np.ndarray, sp: Specimen) -> tuple[np.ndarray, np.ndarray]:
+    """Tensile strain of electrode A (delta > 0) and of electrode B from the laser's reading: e = w h / x_m^2."""
+    e = disp * sp.geometry.thickness / sp.x_sensor**2
+    return np.clip(e, 0, None), np.clip(-e, 0, None)
+
+
 def _strain_basis(ctx: Context) -> dict:
     """What the strain-resistance extension adds per unit gauge factor, computed once per context.
 
@@ -260,21 +266,19 @@ def _strain_basis(ctx: Context) -> dict:
         sp = specimen_for(ctx.specimens, q)
         w = 2j * np.pi * np.array([ctx.sines[k].f for k in idx])
         sens = (_sensitivity(transfer.displacement_tf, sp)(w), _sensitivity(transfer.admittance_tf, sp)(w))
-        scale = sp.geometry.thickness / sp.x_sensor**2
         for j, k in enumerate(idx):
             a = _drive(ctx.sines[k])
-            e = (ctx.Hd[k] * a * ph).real * scale
+            parts = _gauge_strain((ctx.Hd[k] * a * ph).real, sp)
             for c in range(2):
                 sv = (sens[c][j] * a * ph).real
-                for el, part in enumerate((np.clip(e, 0, None), np.clip(-e, 0, None))):
+                for el, part in enumerate(parts):
                     sines[k, c, el] = 0.5 * np.fft.fft(part * sv)[1:4] * 2 / n
     steps = []
     for st in ctx.steps:
         sp = specimen_for(ctx.specimens, st.pressure_kPa)
         d, sd, si = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), _sensitivity(transfer.displacement_tf, sp),
                                             _sensitivity(transfer.admittance_tf, sp)], st.v_full, st.fs_full)
-        e = d * sp.geometry.thickness / sp.x_sensor**2
-        parts = (np.clip(e, 0, None), np.clip(-e, 0, None))
+        parts = _gauge_strain(d, sp)
         steps.append(np.array([[st.decimate(0.5 * part * sv) for part in parts] for sv in (sd, si)]))  # (channel, electrode, t)
     ctx.cache["strain"] = {"sines": sines, "steps": steps}
     return ctx.cache["strain"]

@@ -278,8 +278,9 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     b_fit = blocks(baseline(ctx_fit), ctx_fit)
     b_held = blocks(baseline(ctx_held), ctx_held)
     c0, n = chi2(b_fit)
-    where = missed(block_rms(b_held))
-    base_heldout = nrmse(b_held, where)
+    held_rms = block_rms(b_held)
+    where = missed(held_rms)
+    base_heldout = heldout_error(held_rms, where)
     cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, b_held, refit_mechanics=True)
     named = _significant(cands)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
@@ -318,8 +319,8 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
             {"name": c.name, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
             for c in cands
         ],
-        "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": block_rms(b_held), "missed": sorted(where),
-                     "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in block_rms(b_held) if k in CLEAN_ACCURACY}},
+        "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": held_rms, "missed": sorted(where),
+                     "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY}},
         "extended": {"name": best.name, "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "gain": {"heldout_nrmse_ratio": best.heldout_ratio, "delta_bic": best.delta_bic},
         "split": {"fit": sorted(p for p in fit_set if p is not None), "heldout": sorted(p for p in held_set if p is not None), "same_records": same},

@@ -132,16 +132,16 @@ def fit_impedance(data: list[PressureData], priors: dict[float, Specimen]) -> tu
     return res, sigma
 
 
-def fit_electrical(eis: list[PressureData], cur: list[PressureData], priors: dict[float, Specimen]) -> tuple[lmfit.minimizer.MinimizerResult, float]:
+def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> tuple[lmfit.minimizer.MinimizerResult, float]:
     """The electrical stage: the spectra (``fit_impedance``, which also gives the analyser's noise), then the
-    spectra and the DAQ's current admittance together. The spectrum alone leaves the line and clamp resistances
-    free to trade along a shallow valley (R 7 % high against R_c 5 % low in one clean session of ten, which
-    then put the displacement FRF 1-3 % off near resonance); the current, 15x less noisy per point, pins it.
+    spectra and the same pressures' DAQ current admittance together. The spectrum alone leaves the line and clamp
+    resistances free to trade along a shallow valley (R 7 % high against R_c 5 % low in one clean session of ten,
+    which then put the displacement FRF 1-3 % off near resonance); the current, 15x less noisy per point, pins it.
     The current carries no displacement-path effect, so this stage stays a purely electrical baseline."""
-    res, sigma = fit_impedance(eis, priors)
-    cur = [d for d in cur if d.current_lines() is not None]
+    res, sigma = fit_impedance(data, priors)
+    cur = [d for d in data if d.current_lines() is not None]
     if cur:
-        res = Problem(priors, eis=eis, cur=cur, sigma_eis=sigma).minimize(res.params)
+        res = Problem(priors, eis=data, cur=cur, sigma_eis=sigma).minimize(res.params)
     return res, sigma
 
 
@@ -248,7 +248,7 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
     with_frf = [d for d in sd.pressures if (lines := d.frf_lines()) is not None and lines[0].size >= MIN_FRF_LINES]
     final = None
     if with_eis:
-        res, fit.eis_noise_rel = fit_electrical(with_eis, with_eis, priors)
+        res, fit.eis_noise_rel = fit_electrical(with_eis, priors)
         final = res.params
         fit.staged_specimens = _specimens(priors, final)
     else:
