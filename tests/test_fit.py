@@ -75,7 +75,8 @@ def test_imported_data_is_fitted_like_a_session(tmp_path):
     out_h5 = tmp_path / "imported.h5"
     r = subprocess.run([sys.executable, "-m", "labrig", "import", str(DATA / "import_example" / "manifest.toml"), "--out", str(out_h5)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    r = subprocess.run([sys.executable, "-m", "labrig", "fit", str(out_h5), "--json"], capture_output=True, text=True)
+    r = subprocess.run([sys.executable, "-m", "labrig", "fit", str(out_h5), "--json", "--seed001", "on", "--seed001-law", "butler_volmer"],
+                       capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     out = json.loads(r.stdout)
     rows = {row["pressure_kPa"]: row for row in out["per_pressure"]}
@@ -87,6 +88,11 @@ def test_imported_data_is_fitted_like_a_session(tmp_path):
     assert out["optimum_pressure_kPa"] in (612, 3062)
     assert out["alpha"] is None  # one stepped sine cannot make an FRF: said, not guessed
     assert any("FRF" in n for n in out["notes"])
+    # seed 001 asked for on imported steps, with the Butler-Volmer law: its parameters, fitted to the steps
+    h = out["seed001"]
+    assert h["law"] == "butler_volmer" and h["records"] == ["p612/step", "p3062/step"]
+    assert {"i0", "v_t"} <= set(h["params"]) and "g3" not in h["params"]
+    assert h["nrmse_displacement"] < 0.05  # the linear current -> displacement stage follows the model's steps
 
 
 def test_amplitude_series_gets_the_hammerstein_fit(tmp_path):

@@ -11,6 +11,7 @@ import numpy as np
 
 from labrig.cli.common import jsonable, print_json
 from labrig.errors import BadInput
+from labrig.physics.hammerstein import LAWS
 
 
 def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
@@ -28,7 +29,8 @@ def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     return sd, fit_seed000(sd)
 
 
-def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None) -> dict[str, Any]:
+def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
+            seed001_law: str = "poly") -> dict[str, Any]:
     """Fit the seed-000 model (and seed 001's where the data allows) to a session; store the results under
     /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
     from labrig.fit.seed001 import fit_seed001
@@ -38,7 +40,7 @@ def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "neld
     out = jsonable(fit.to_json())
     out["seed001"] = None
     if seed001 != "off":
-        h = fit_seed001(sd, method=seed001_method, force=seed001 == "on")
+        h = fit_seed001(sd, method=seed001_method, law=seed001_law, force=seed001 == "on")
         out["seed001"] = jsonable(h)
         if h is not None:
             SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(out["seed001"])})
@@ -87,12 +89,14 @@ def _summary(out: dict[str, Any]) -> None:
 @click.option("--seed001", type=click.Choice(["auto", "on", "off"]), default="auto", show_default=True,
               help="seed 001's Hammerstein model: auto = when the session has an amplitude series or multisines")
 @click.option("--seed001-method", type=click.Choice(["nelder-mead", "ga", "nsga2"]), default="nelder-mead", show_default=True)
-def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str) -> None:
+@click.option("--seed001-law", type=click.Choice(list(LAWS)), default="poly", show_default=True,
+              help="the electric stage's nonlinear law (docs/hammerstein.md)")
+def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str, seed001_law: str) -> None:
     """Fit the paper's model (seed 000) to SESSION, and seed 001's where the data allows; results go into
     /entry/analysis/."""
     if not Path(session).exists():
         raise BadInput(f"{session}: no such session file")
-    out = run_fit(session, seed001, seed001_method)
+    out = run_fit(session, seed001, seed001_method, seed001_law=seed001_law)
     if as_json:
         print_json(out)
     else:
