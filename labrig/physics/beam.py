@@ -47,38 +47,44 @@ def beta_L_roots(Kt_bar: float, n: int = 10) -> np.ndarray:
     return np.array(_roots(float(Kt_bar), int(n)))
 
 
-def bc_matrix(beta_L: float, Kt_bar: float) -> np.ndarray:
+def bc_matrix(beta_L: np.ndarray | float, Kt_bar: float) -> np.ndarray:
     """Rows: eq. 27a (w = 0, EI w'' = k_t w'), eq. 27b (w'' = w''' = 0) on the coefficients of
-    (cos bx, sin bx, exp(-bx), exp(-b(L-x))), written per unit beta so the entries stay O(1)."""
-    bl = beta_L
+    (cos bx, sin bx, exp(-bx), exp(-b(L-x))), written per unit beta so the entries stay O(1).
+    An array of roots gives a stack of matrices, shape (..., 4, 4)."""
+    bl = np.asarray(beta_L, float)
     c, s, e = np.cos(bl), np.sin(bl), np.exp(-bl)
+    one, zero = np.ones_like(bl), np.zeros_like(bl)
     # row 2: beta L phi''(0)/beta^2 - Kt phi'(0)/beta, divided by (beta L + Kt) so Kt -> inf is the clamp
-    w = 0.0 if np.isinf(Kt_bar) else 1.0 / (bl + Kt_bar)
-    k = 1.0 if np.isinf(Kt_bar) else Kt_bar * w
-    return np.array(
-        [
-            [1.0, 0.0, 1.0, e],
-            [-bl * w, -k, bl * w + k, (bl * w - k) * e],
-            [-c, -s, e, 1.0],  # phi''(L) / beta^2
-            [s, -c, -e, 1.0],  # phi'''(L) / beta^3
-        ]
-    )
+    w = zero if np.isinf(Kt_bar) else 1.0 / (bl + Kt_bar)
+    k = one if np.isinf(Kt_bar) else Kt_bar * w
+    rows = [
+        [one, zero, one, e],
+        [-bl * w, -k, bl * w + k, (bl * w - k) * e],
+        [-c, -s, e, one],  # phi''(L) / beta^2
+        [s, -c, -e, one],  # phi'''(L) / beta^3
+    ]
+    return np.moveaxis(np.array(rows), (0, 1), (-2, -1))
 
 
-def mode_coefficients(beta_L: float, Kt_bar: float) -> np.ndarray:
-    """Null vector of ``bc_matrix``: the mode's coefficients, sign chosen so phi(L) > 0."""
-    _, sv, vt = np.linalg.svd(bc_matrix(beta_L, Kt_bar))
-    coef = vt[-1]
-    if sv[-1] > 1e-8 * sv[0]:
-        raise ValueError(f"beta L = {beta_L} is not an eigenvalue for K_t bar = {Kt_bar}")
-    tip = coef @ _basis(np.array([1.0]), beta_L, 0)[:, 0]
-    return coef if tip > 0 else -coef
+def mode_coefficients(beta_L: np.ndarray | float, Kt_bar: float) -> np.ndarray:
+    """Null vector of ``bc_matrix``: the mode's coefficients, sign chosen so phi(L) > 0.
+    An array of roots gives one row of coefficients per root (one batched SVD)."""
+    bl = np.asarray(beta_L, float)
+    _, sv, vt = np.linalg.svd(bc_matrix(bl, Kt_bar))
+    coef = vt[..., -1, :]
+    bad = sv[..., -1] > 1e-8 * sv[..., 0]
+    if np.any(bad):
+        raise ValueError(f"beta L = {bl[bad] if bl.ndim else bl} is not an eigenvalue for K_t bar = {Kt_bar}")
+    tip = np.einsum("...j,j...->...", coef, _basis(np.array([1.0]), bl, 0)[:, 0])
+    return coef * np.where(tip > 0, 1.0, -1.0)[..., None]
 
 
-def _basis(xi: np.ndarray, beta_L: float, derivative: int) -> np.ndarray:
-    """Basis functions (rows) at xi = x/L, d^k/d(beta x)^k of (cos, sin, exp(-bx), exp(-b(L-x)))."""
-    bx = beta_L * xi
-    e0, e1 = np.exp(-bx), np.exp(-beta_L * (1.0 - xi))
+def _basis(xi: np.ndarray, beta_L: np.ndarray | float, derivative: int) -> np.ndarray:
+    """Basis functions (rows) at xi = x/L, d^k/d(beta x)^k of (cos, sin, exp(-bx), exp(-b(L-x))):
+    shape (4, len(xi)) for one root, (4, len(xi), n) for an array of n roots."""
+    bl = np.asarray(beta_L, float)
+    bx = np.multiply.outer(xi, bl)
+    e0, e1 = np.exp(-bx), np.exp(-(bl - bx))
     c, s = np.cos(bx), np.sin(bx)
     k = derivative % 4
     dcos, dsin = (c, -s, -c, s)[k], (s, c, -s, -c)[k]
@@ -87,9 +93,15 @@ def _basis(xi: np.ndarray, beta_L: float, derivative: int) -> np.ndarray:
 
 def mode_shape(x: np.ndarray, length: float, beta_L: float, Kt_bar: float, derivative: int = 0) -> np.ndarray:
     """phi_i(x) (derivative = 0) or its x-derivatives (1, 2, 3), unnormalised (see ``ModalSet``)."""
-    coef = mode_coefficients(beta_L, Kt_bar)
-    xi = np.asarray(x, float) / length
-    return coef @ _basis(np.atleast_1d(xi), beta_L, derivative) * (beta_L / length) ** derivative
+    return mode_shapes(x, length, np.array([beta_L]), Kt_bar, derivative)[:, 0]
+
+
+def mode_shapes(x: np.ndarray, length: float, beta_L: np.ndarray, Kt_bar: float, derivative: int = 0) -> np.ndarray:
+    """Every mode of ``beta_L`` at once: phi_i(x) or its x-derivatives, shape (len(x), len(beta_L))."""
+    bl = np.asarray(beta_L, float)
+    coef = mode_coefficients(bl, Kt_bar)  # (n, 4)
+    xi = np.atleast_1d(np.asarray(x, float)) / length
+    return np.einsum("nj,jxn->xn", coef, _basis(xi, bl, derivative)) * (bl / length) ** derivative
 
 
 def natural_frequency(beta_L: np.ndarray | float, E: float, I: float, mu_v: float, length: float) -> np.ndarray:

@@ -18,6 +18,7 @@ from labrig.physics.impedance import charging_admittance, impedance, propagation
 from labrig.physics.params import Specimen
 
 QUAD_NODES = 48  # exact to 1e-13 for 10 modes up to 1 kHz (checked against 300 nodes)
+_LEGENDRE = np.polynomial.legendre.leggauss(QUAD_NODES)  # nodes and weights on [-1, 1], computed once
 
 
 @dataclass(frozen=True)
@@ -60,12 +61,12 @@ def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float) -> tupl
     """Roots and mode shapes on the quadrature nodes: they depend on K_t bar and the geometry only."""
     L = length
     bl = beam.beta_L_roots(Kt_bar, n_modes)
-    u, w = np.polynomial.legendre.leggauss(QUAD_NODES)
+    u, w = _LEGENDRE
     nodes, weights = 0.5 * L * (u + 1.0), 0.5 * L * w
-    phi = np.stack([beam.mode_shape(nodes, L, b, Kt_bar) for b in bl], axis=1)
-    phi2 = np.stack([beam.mode_shape(nodes, L, b, Kt_bar, 2) for b in bl], axis=1)
+    phi = beam.mode_shapes(nodes, L, bl, Kt_bar)
+    phi2 = beam.mode_shapes(nodes, L, bl, Kt_bar, 2)
     norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
-    phi_s = np.array([beam.mode_shape(np.array([x_sensor]), L, b, Kt_bar)[0] for b in bl]) / norm
+    phi_s = beam.mode_shapes(np.array([x_sensor]), L, bl, Kt_bar)[0] / norm
     return bl, nodes, weights, phi / norm, phi2 / norm, phi_s
 
 
