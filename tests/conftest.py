@@ -7,6 +7,30 @@ import pytest
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")  # the live window tests need no display
 
 _status = {"code": 0}
+_bench_cases: list[tuple[str, int]] = []
+BENCH_TIMEOUT_S = 1800  # the test that first asks for the shared sweeps waits for all of them (~6 min on 2 cores)
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Collect every selected module's ``BENCH_CASES`` (the simulated paper sweeps it reads), so the shared sweeps
+    run in one pool; the tests that read them get the long time limit."""
+    for module in dict.fromkeys(getattr(item, "module", None) for item in items):
+        for case in getattr(module, "BENCH_CASES", ()):
+            if case not in _bench_cases:
+                _bench_cases.append(case)
+    for item in items:
+        if "bench_sessions" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.timeout(BENCH_TIMEOUT_S))
+
+
+@pytest.fixture(scope="session")
+def bench_sessions(tmp_path_factory: pytest.TempPathFactory):
+    """Paper sweeps on the simulated bench (scenario, seed), each run, fitted and diagnosed once for the whole test
+    session, exactly as ``labrig run paper-sweep --sim --scenario NAME --seed N --fit --diagnose`` does
+    (labrig.diagnose.coverage.CaseCache)."""
+    from labrig.diagnose.coverage import CaseCache
+
+    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases)
 
 
 def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:

@@ -5,30 +5,20 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
-
-from labrig.cli.diagnose_cmd import run_diagnosis
-from labrig.session_run import RunRequest, execute
 from labrig.store import SessionFile
-from mock_devices import scenarios
 
 DATA = Path(__file__).parent / "data"
 
+TWO_EFFECTS = ("back_relaxation+mains_pickup", 3)
+BENCH_CASES = [TWO_EFFECTS]  # a paper sweep run, fitted and diagnosed as `labrig run ... --fit --diagnose` (conftest)
 
-def _sweep(tmp_path, scenario, seed):
-    path = tmp_path / f"{scenario.replace('+', '_')}_{seed}.h5"
-    assert execute(RunRequest("paper-sweep", path, effects=scenarios.effects_for(scenario, seed), seed=seed)).exit_code == 0
-    return path
-
-
-def test_two_hidden_effects_are_both_named_and_the_result_is_stored(tmp_path):
-    path = _sweep(tmp_path, "back_relaxation+mains_pickup", 3)
-    out = run_diagnosis(path)
+def test_two_hidden_effects_are_both_named_and_the_result_is_stored(bench_sessions):
+    case = bench_sessions.get([TWO_EFFECTS])[0]
+    path, out = case.path, case.output
     assert out["verdict"] == "effect"
     assert set(out["effects"][:2]) == {"back_relaxation", "mains_pickup"}
     stored = json.loads(SessionFile(path).read_analysis("diagnosis")["result_json"])
     assert stored["cause"] == out["cause"] and stored["effects"] == out["effects"]
-
 
 def test_imported_data_is_diagnosed_like_a_session(tmp_path):
     out_h5 = tmp_path / "imported.h5"
@@ -38,7 +28,6 @@ def test_imported_data_is_diagnosed_like_a_session(tmp_path):
     assert r.returncode == 0, r.stderr
     out = json.loads(r.stdout)
     assert out["verdict"] in ("effect", "none", "unexplained") and len(out["candidates"]) == 10
-
 
 def test_diagnose_missing_file_is_bad_input(tmp_path):
     r = subprocess.run([sys.executable, "-m", "labrig", "diagnose", str(tmp_path / "nope.h5")], capture_output=True, text=True)

@@ -17,10 +17,12 @@ from labrig.store import SessionFile
 DATA = Path(__file__).parent / "data"
 
 
+BENCH_CASES = [("none", 1)]  # the clean paper sweep, shared with the other files that read it (conftest)
+
+
 @pytest.fixture(scope="module")
-def sweep(tmp_path_factory):
-    path = tmp_path_factory.mktemp("sweep") / "paper.h5"
-    assert execute(RunRequest("paper-sweep", path, seed=11)).exit_code == 0
+def sweep(bench_sessions):
+    path = bench_sessions.get(BENCH_CASES)[0].path
     return path, run_fit(path)
 
 

@@ -16,10 +16,9 @@ from labrig.cli import main
 from labrig.cli.analysis_cmds import load_and_fit
 from labrig.cli.diagnose_cmd import run_diagnosis
 from labrig.fit.session_data import load_session
-from labrig.session_run import RunRequest, execute
-from mock_devices import scenarios
 
 EFFECT, SEED = "dehydration", 1  # a drift with time: seen only if the records keep their places in time
+BENCH_CASES = [(EFFECT, SEED)]  # the original: run, fitted and diagnosed once for the suite (conftest)
 EXAMPLE = Path(__file__).parent / "data" / "import_example"
 
 
@@ -34,16 +33,16 @@ def diagnosed(path):
 
 
 @pytest.fixture(scope="module")
-def sessions(tmp_path_factory):
-    """(original, imported copy) as (SessionData, diagnosis) each, made once (~60 s of the file's ~70 s)."""
+def sessions(bench_sessions, tmp_path_factory):
+    """(original, imported copy) as (SessionData, diagnosis) each."""
     folder = tmp_path_factory.mktemp("roundtrip")
-    original, imported = folder / "original.h5", folder / "imported.h5"
-    assert execute(RunRequest("paper-sweep", original, effects=scenarios.effects_for(EFFECT, SEED), seed=SEED)).exit_code == 0
+    case = bench_sessions.get(BENCH_CASES)[0]
+    original, imported = case.path, folder / "imported.h5"
     r = run_cli("export", original, "--out", folder / "csv")
     assert r.returncode == 0, r.stderr
     r = run_cli("import", folder / "csv" / "manifest.toml", "--out", imported)
     assert r.returncode == 0, r.stderr
-    return diagnosed(original), diagnosed(imported)
+    return (load_session(original), case.output), diagnosed(imported)
 
 
 def test_imported_copy_is_diagnosed_like_the_original(sessions):

@@ -26,6 +26,8 @@ class CaseResult:
     delta_bic: float
     diagnose_s: float  # wall time of fit + diagnosis, as `labrig diagnose` spends it
     output: dict = field(default_factory=dict, repr=False)  # the whole `labrig diagnose --json` object
+    path: str = ""  # the session file
+    fit: dict = field(default_factory=dict, repr=False)  # the seed-000 fit the diagnosis stands on (`labrig fit --json`)
 
     @property
     def answer(self) -> str:
@@ -40,6 +42,8 @@ class CaseResult:
 def run_case(args: tuple[str, int, str, str]) -> CaseResult:
     """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
     name, seed, folder, protocol = args
+    from labrig.cli.analysis_cmds import load_and_fit
+    from labrig.cli.common import jsonable
     from labrig.cli.diagnose_cmd import run_diagnosis
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
@@ -54,9 +58,10 @@ def run_case(args: tuple[str, int, str, str]) -> CaseResult:
     else:
         raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
     t0 = time.perf_counter()
-    out = run_diagnosis(path)
+    fitted = load_and_fit(path, "diagnose")
+    out = run_diagnosis(path, fitted)
     return CaseResult(name, seed, out["verdict"], out["cause"], list(out["effects"]), float(out["gain"]["heldout_nrmse_ratio"]),
-                      float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out)
+                      float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path), jsonable(fitted[1].to_json()))
 
 
 def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2) -> list[CaseResult]:
@@ -64,6 +69,24 @@ def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = 
     ctx = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(jobs, mp_context=ctx) as pool:
         return list(pool.map(run_case, [(n, s, str(folder), protocol) for n, s in cases]))
+
+
+class CaseCache:
+    """Cases run once and shared (the test suite's paper sweeps). ``get`` runs what is missing together with every
+    case announced in ``expected``, in one pool, so both workers stay busy instead of one sweep at a time."""
+
+    def __init__(self, folder: str | Path, expected: list[tuple[str, int]] = (), protocol: str = "paper-sweep", jobs: int = 2):
+        self.folder, self.protocol, self.jobs = Path(folder), protocol, jobs
+        self._expected = list(expected)
+        self._done: dict[tuple[str, int], CaseResult] = {}
+
+    def get(self, cases: list[tuple[str, int]]) -> list[CaseResult]:
+        cases = list(cases)
+        if any(c not in self._done for c in cases):
+            missing = [c for c in dict.fromkeys([*cases, *self._expected]) if c not in self._done]
+            for r in run_cases(missing, self.folder, self.protocol, self.jobs):
+                self._done[(r.scenario, r.seed)] = r
+        return [self._done[c] for c in cases]
 
 
 def confusion(results: list[CaseResult], names: list[str]) -> str:
