@@ -116,6 +116,12 @@ def test_nsga2_front_is_nondominated_and_knee_on_it(fits):
     assert f.objectives["displacement"] == pytest.approx(F[f.knee, 1], rel=1e-9)
 
 
+def test_the_command_line_offers_every_law():
+    from labrig.cli.analysis_cmds import SEED001_LAWS
+
+    assert SEED001_LAWS == tuple(hm.LAWS)
+
+
 def test_knee_rule():
     F = np.array([[1.0, 10.0], [1.01, 1.05], [1.02, 1.0], [3.0, 0.99]])
     assert fh.knee_point(F) == 2

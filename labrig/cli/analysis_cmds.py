@@ -11,7 +11,9 @@ import numpy as np
 
 from labrig.cli.common import jsonable, print_json
 from labrig.errors import BadInput
-from labrig.physics.hammerstein import LAWS
+
+# labrig.physics.hammerstein.LAWS, spelled out: importing it here would load scipy for every command (test_hammerstein)
+SEED001_LAWS = ("poly", "butler_volmer", "varcap")
 
 
 def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
@@ -89,7 +91,7 @@ def _summary(out: dict[str, Any]) -> None:
 @click.option("--seed001", type=click.Choice(["auto", "on", "off"]), default="auto", show_default=True,
               help="seed 001's Hammerstein model: auto = when the session has an amplitude series or multisines")
 @click.option("--seed001-method", type=click.Choice(["nelder-mead", "ga", "nsga2"]), default="nelder-mead", show_default=True)
-@click.option("--seed001-law", type=click.Choice(list(LAWS)), default="poly", show_default=True,
+@click.option("--seed001-law", type=click.Choice(SEED001_LAWS), default="poly", show_default=True,
               help="the electric stage's nonlinear law (docs/hammerstein.md)")
 def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str, seed001_law: str) -> None:
     """Fit the paper's model (seed 000) to SESSION, and seed 001's where the data allows; results go into
