@@ -199,6 +199,8 @@ class SessionReader:
     def step(self, step: int | str | StepRecord) -> StepRecord:
         """A step by index, by name or from a record (re-read: rows and status as they are now)."""
         if isinstance(step, StepRecord):
+            if not self.swmr:  # a file no writer has open cannot have changed since the record was read
+                return step
             return self._record(self._entry.file[step.group])
         # the plan lays out every step group at the start, so the lookup table is built once
         table = getattr(self, "_step_table", None)
