@@ -32,3 +32,21 @@ def test_imported_data_is_diagnosed_like_a_session(tmp_path):
 def test_diagnose_missing_file_is_bad_input(tmp_path):
     r = subprocess.run([sys.executable, "-m", "labrig", "diagnose", str(tmp_path / "nope.h5")], capture_output=True, text=True)
     assert r.returncode == 2 and "nope.h5" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_play_operator_follows_its_recursion():
+    """The hysteresis extension's phase-wise play operator against y_k = clip(y_{k-1}, x_k - r, x_k + r) from 0."""
+    import numpy as np
+
+    from labrig.diagnose.catalogue import _play
+
+    rng = np.random.default_rng(3)
+    drives = [rng.normal(0, 1, 300), np.cumsum(rng.normal(0, 0.2, 300)),
+              np.repeat([0.0, 1.0, -1.0, 0.5, 0.0], 60) + rng.normal(0, 1e-3, 300)]
+    for x in drives:
+        for r in (0.0, 0.05, 0.3, 2.0):
+            y, prev = np.empty_like(x), 0.0
+            for k, xk in enumerate(x):
+                prev = min(max(prev, xk - r), xk + r)
+                y[k] = prev
+            np.testing.assert_allclose(_play(x, r), y, rtol=0, atol=1e-12)

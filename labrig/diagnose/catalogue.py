@@ -113,18 +113,29 @@ def _faradaic(th, ctx):
 
 
 def _play(x: np.ndarray, r: float) -> np.ndarray:
-    """Play (backlash) operator of half-width r, starting at 0, along the last axis (rows independent).
+    """Play (backlash) operator of half-width r on a 1-D drive, starting at 0.
 
-    y_k = clip(y_{k-1}, x_k - r, x_k + r). A drive that stays inside the band leaves y unchanged, so only
-    the samples where the band moves past y are walked one by one (a step drive is a few hundred of them).
+    y_k = clip(y_{k-1}, x_k - r, x_k + r). y holds until x leaves the band around it; from there it is the
+    running maximum of x - r (or minimum of x + r) until x turns back through the whole band. Each such phase
+    is one vectorised pass, and a step drive with small noise has a phase per edge, not per sample.
     """
-    x = np.atleast_2d(np.asarray(x, float))
+    x = np.asarray(x, float).ravel()
     y = np.empty_like(x)
-    prev = np.zeros(x.shape[0])
-    lo, hi = x - r, x + r
-    for k in range(x.shape[1]):
-        prev = np.minimum(np.maximum(prev, lo[:, k]), hi[:, k])
-        y[:, k] = prev
+    k, state = 0, 0.0
+    while k < x.size:
+        rest = x[k:]
+        out = np.flatnonzero(np.abs(rest - state) > r)  # first sample that pushes the band
+        if out.size == 0:
+            y[k:] = state
+            break
+        j = k + out[0]
+        y[k:j] = state
+        up = x[j] - r > state
+        push = np.maximum.accumulate(x[j:] - r) if up else np.minimum.accumulate(x[j:] + r)
+        back = np.flatnonzero(x[j:] + r < push) if up else np.flatnonzero(x[j:] - r > push)  # turned through the band
+        end = j + (back[0] if back.size else x.size - j)
+        y[j:end] = push[: end - j]
+        state, k = float(y[end - 1]), end
     return y
 
 
@@ -165,7 +176,7 @@ def _hysteresis(th, ctx):
         q = st.q
         n = (st.v_full.size // q) * q
         vb = st.v_full[:n].reshape(-1, q).mean(axis=1)
-        yb = _play(vb, r)[0]
+        yb = _play(vb, r)
         played = np.r_[np.repeat(yb, q), np.full(st.v_full.size - n, yb[-1] if yb.size else 0.0)]
         veff = (1 - w) * st.v_full + w * played
         p.step_d[k] = gain * predict_step(sp, st, veff)[0]
