@@ -138,3 +138,15 @@ def test_a_failed_run_exits_3_with_one_line(tmp_path):
     assert "safety trip" in r.stderr
     with SessionReader(out) as s:
         assert s.exit_status == "fail" and s.stream(2, "daq").rows > 0
+
+
+def test_every_command_loads_under_its_name():
+    """Commands are imported when they run (labrig.cli._COMMANDS): each entry must resolve to its command."""
+    import click
+
+    from labrig.cli import _COMMANDS, app
+
+    ctx = click.Context(app)
+    assert app.list_commands(ctx) == sorted(_COMMANDS)
+    for name in _COMMANDS:
+        assert app.get_command(ctx, name).name == name

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import os
 import sys
 
@@ -11,33 +12,41 @@ from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+# command -> "module:attribute". A command's module is imported only when that command runs (click's lazy
+# subcommands): the physics behind fit, model and run loads scipy, ~0.5 s that `inspect` or a typo need not pay.
+_COMMANDS = {
+    "run": "labrig.cli.run_cmd:run_cmd",
+    "sim": "labrig.cli.run_cmd:sim_cmd",
+    "inspect": "labrig.cli.session_cmds:inspect_cmd",
+    "import": "labrig.cli.session_cmds:import_cmd",
+    "export": "labrig.cli.session_cmds:export_cmd",
+    "fit": "labrig.cli.analysis_cmds:fit_cmd",
+    "diagnose": "labrig.cli.diagnose_cmd:diagnose_cmd",
+    "report": "labrig.cli.report_cmd:report_cmd",
+    "replay": "labrig.cli.live_cmds:replay_cmd",
+    "model": "labrig.cli.model:model",
+}
+
+
+class _LazyGroup(click.Group):
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted([*super().list_commands(ctx), *_COMMANDS])
+
+    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
+        if name in _COMMANDS:
+            module, attr = _COMMANDS[name].split(":")
+            return getattr(importlib.import_module(module), attr)
+        return super().get_command(ctx, name)
+
+
+@click.group(cls=_LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="labrig")
 def app() -> None:
     """Instrument control, acquisition, fitting and diagnosis for IPMC actuators."""
 
 
-def _register() -> None:
-    from labrig.cli import analysis_cmds, diagnose_cmd, model, run_cmd
-
-    app.add_command(model.model)
-    app.add_command(analysis_cmds.fit_cmd)
-    app.add_command(diagnose_cmd.diagnose_cmd)
-    app.add_command(run_cmd.run_cmd)
-    app.add_command(run_cmd.sim_cmd)
-    from labrig.cli import session_cmds
-
-    session_cmds.register(app)
-    from labrig.cli import live_cmds
-    live_cmds.register(app)
-    from labrig.cli import report_cmd
-
-    app.add_command(report_cmd.report_cmd)
-
-
 def main(argv: list[str] | None = None) -> int:
     """Entry point: one clear line on stderr for bad input (exit 2) and instrument faults (exit 3)."""
-    _register()
     try:
         rc = app.main(args=argv, prog_name="labrig", standalone_mode=False)
         return rc if isinstance(rc, int) else 0  # click returns an Exit's code here instead of raising

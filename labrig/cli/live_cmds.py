@@ -50,7 +50,3 @@ def replay_cmd(file: str, live: bool, speed: float, screenshot: str | None, do_c
         # SystemExit, not click's Exit: with standalone_mode=False click 8.5 returns Exit's code from
         # app.main() instead of raising it, and labrig.cli.main drops that return value (exit 0)
         raise SystemExit(code)
-
-
-def register(app: click.Group) -> None:
-    app.add_command(replay_cmd)

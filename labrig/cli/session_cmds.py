@@ -122,10 +122,3 @@ def export_cmd(session: str, out_dir: str, force: bool) -> None:
     for note in done.notes:
         click.echo(f"note: {note}")
     click.echo(f"wrote {done.records} records ({done.rows} rows) to {done.manifest.parent}; read back with: labrig import {done.manifest} --out FILE.h5")
-
-
-def register(app: click.Group) -> None:
-    """Add ``inspect``, ``import`` and ``export`` to the ``labrig`` group."""
-    app.add_command(inspect_cmd)
-    app.add_command(import_cmd)
-    app.add_command(export_cmd)
