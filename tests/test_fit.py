@@ -105,3 +105,25 @@ def test_amplitude_series_gets_the_hammerstein_fit(tmp_path):
     assert h is not None and h["nrmse_current"] < 0.05
     assert abs(h["params"]["g3"]) < 1e-4  # the simulated strip is linear: no cubic conductance to find
     assert SessionFile(path).read_analysis("fit_seed001")
+
+
+def test_a_record_with_nans_is_left_out_with_a_note(tmp_path):
+    """A stored record whose displacement holds NaNs (a laser dropout) is named in the notes and left out; the FRF
+    fit goes on with the other frequencies."""
+    import gzip
+    import shutil
+
+    import h5py
+
+    path = tmp_path / "stepped-sine.h5"
+    with gzip.open(DATA / "sessions" / "stepped-sine.h5.gz") as src, open(path, "wb") as dst:
+        shutil.copyfileobj(src, dst)
+    with h5py.File(path, "r+") as f:
+        steps = f["entry/steps"]
+        name = next(n for n in steps if steps[n].attrs["kind"] == "stepped_sine")
+        disp = steps[name]["daq/disp_m"]
+        disp[10:20] = np.nan
+        label = steps[name].attrs["name"]
+    out = run_fit(path)
+    assert any(label in n and "NaN" in n for n in out["notes"]), out["notes"]
+    assert out["alpha"] is not None and np.isfinite(out["alpha"]) and np.isfinite(out["per_pressure"][0]["f1_Hz"])

@@ -208,6 +208,20 @@ def test_thin_session_says_what_is_missing(tmp_path):
     assert page.verdict is None
 
 
+def test_imported_session_gets_a_report(tmp_path):
+    """The import example (CSV + manifest: spectra, steps, one sine at two pressures) through `labrig report`."""
+    path = tmp_path / "imported.h5"
+    assert main(["import", str(DATA / "import_example" / "manifest.toml"), "--out", str(path)]) == 0
+    rc, said = _run(["report", str(path), "--out", str(tmp_path / "imported.html")])
+    assert rc == 0 and "imported.html" in said
+    page = Page((tmp_path / "imported.html").read_text())
+    assert {"impedance", "step", "optimum"} <= {f["data-figure"] for f in page.figures}
+    assert all(len(f["images"]) == 1 for f in page.figures)
+    missing = " ".join(page.missing)
+    assert "No harmonic records" in missing and "seed 001" in missing  # said, not drawn empty
+    assert page.verdict is not None and page.verdict["data-verdict"] in ("effect", "none", "unexplained")
+
+
 @pytest.mark.parametrize("kind", ["text", "hdf5", "absent"])
 def test_not_a_session_exits_2_with_one_line(tmp_path, capsys, kind):
     path = tmp_path / "x.h5"
