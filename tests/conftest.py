@@ -30,7 +30,9 @@ def bench_sessions(tmp_path_factory: pytest.TempPathFactory):
     (labrig.diagnose.coverage.CaseCache)."""
     from labrig.diagnose.coverage import CaseCache
 
-    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases)
+    # three workers on two cores: a run spends part of its time waiting on the simulated bench's scaled clock, and a
+    # third worker fills it (40 sweeps: 326 s against ~375 s with two; a run the overloaded bench faults is rerun)
+    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases, jobs=3)
 
 
 def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
