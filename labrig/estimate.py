@@ -552,10 +552,14 @@ class ForceTrend:
     samples: int
 
 
-def force_trend(t: np.ndarray, f: np.ndarray) -> ForceTrend:
+INDICATOR_STEP_N = 0.01 * 9.80665  # the load cell's display step (drivers.loadcell.COUNT_KGF), in N
+
+
+def force_trend(t: np.ndarray, f: np.ndarray, step_N: float = INDICATOR_STEP_N) -> ForceTrend:
     """Mean and least-squares slope of the load-cell force during a record: slope = sum (t - tbar)(F - Fbar) /
     sum (t - tbar)^2, sigma = s / sqrt(sum (t - tbar)^2) with s the residual std, never below the
-    resolution q of the indicator (its smallest step) over sqrt(12)."""
+    resolution q of the indicator over sqrt(12): its smallest step seen in the record, or ``step_N`` when every
+    reading is the same (a steady clamp on a 0.01 kgf display often is)."""
     t, f = np.asarray(t, float), np.asarray(f, float)
     ok = np.isfinite(t) & np.isfinite(f)
     t, f = t[ok], f[ok]
@@ -568,7 +572,7 @@ def force_trend(t: np.ndarray, f: np.ndarray) -> ForceTrend:
     slope = float(dt @ (f - f.mean()) / stt)
     r = f - f.mean() - slope * dt
     steps = np.abs(np.diff(np.sort(f)))
-    q = float(np.min(steps[steps > 0])) if np.any(steps > 0) else 0.0
+    q = float(np.min(steps[steps > 0])) if np.any(steps > 0) else step_N
     s = max(float(np.sqrt(r @ r / (f.size - 2))), q / np.sqrt(12.0))
     return ForceTrend(float(np.mean(f)), slope, float(s / np.sqrt(stt)), int(f.size))
 

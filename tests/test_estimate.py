@@ -226,6 +226,18 @@ def test_dehydration_drifts_between_realisations_and_the_clean_bench_does_not(tm
     assert d.significant(1e-6) and d.rate_per_s.real < 0 and d.relative_change.real < -0.005  # the strip loses gain
 
 
+def test_a_steady_force_on_the_display_grid_keeps_an_honest_slope_sigma():
+    """Every reading the same (a steady clamp on a 0.01 kgf display): the slope's sigma is the display step's."""
+    from drivers.loadcell import COUNT_KGF, G_N
+    from labrig.estimate import INDICATOR_STEP_N, force_trend
+
+    assert INDICATOR_STEP_N == pytest.approx(COUNT_KGF * G_N)
+    t = np.linspace(0.0, 45.0, 10)
+    ft = force_trend(t, np.full(10, 49.03325))
+    dt = t - t.mean()
+    assert ft.slope_N_per_s == 0.0 and ft.slope_sigma_N_per_s == pytest.approx(INDICATOR_STEP_N / np.sqrt(12 * (dt @ dt)))
+
+
 def test_clamp_relaxation_shows_in_the_load_cell_during_each_record(tmp_path, clean):
     _, sd = clean
     for r in sd.pressures[0].records:
