@@ -73,7 +73,7 @@ def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = 
 
 class CaseCache:
     """Cases run once and shared (the test suite's paper sweeps). ``get`` runs what is missing together with every
-    case announced in ``expected``, in one pool, so both workers stay busy instead of one sweep at a time."""
+    case announced in ``expected``, in one pool, so the workers stay busy instead of one sweep at a time."""
 
     def __init__(self, folder: str | Path, expected: list[tuple[str, int]] = (), protocol: str = "paper-sweep", jobs: int = 2):
         self.folder, self.protocol, self.jobs = Path(folder), protocol, jobs
