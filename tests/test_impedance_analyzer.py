@@ -306,7 +306,7 @@ def test_scpi_server_headers_and_error_queue() -> None:
     server.add("CALCulate#[:SELected]:DATA:RDATa?", lambda r: "ok")
     assert server.handle(":SOURCE2:VOLTAGE?") == "(2,)"
     assert server.handle("sour:volt?") == "(1,)"
-    assert server.handle(":CALC1:SEL:DATA:RDAT?;CALC:DATA:RDATA?") == "ok;ok"
+    assert server.handle(":CALC1:SEL:DATA:RDAT?;:CALC:DATA:RDATA?") == "ok;ok"
     assert server.handle(":SOUR:VOLTS?") is None
     for _ in range(5):
         server.handle("NOPE")
