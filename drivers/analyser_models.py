@@ -10,7 +10,15 @@ means it.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Any, Sequence
+
+
+def hz(f: float) -> str:
+    """A frequency with its SI prefix: 0.001 -> '1 mHz', 1.2e8 -> '120 MHz'."""
+    for scale, unit in ((1e6, "MHz"), (1e3, "kHz"), (1.0, "Hz"), (1e-3, "mHz")):
+        if abs(f) >= scale:
+            return f"{f / scale:.4g} {unit}"
+    return f"{f * 1e6:.4g} uHz"
 
 
 @dataclass(frozen=True)
@@ -24,7 +32,7 @@ class AnalyserModel:
 
     def range_text(self) -> str:
         lo, hi = self.freq_range_Hz
-        return f"{self.name} measures {lo:g} Hz to {hi:g} Hz"
+        return f"{self.name} measures {hz(lo)} to {hz(hi)}"
 
 
 MODELS: dict[str, AnalyserModel] = {
@@ -53,4 +61,17 @@ def out_of_range(model: str, freqs_Hz: Sequence[float]) -> str | None:
     bad = [f for f in freqs_Hz if not lo <= f <= hi]
     if not bad:
         return None
-    return f"asks the {m.name} for {min(bad):g} Hz..{max(bad):g} Hz outside its range ({m.range_text()})"
+    asked = hz(min(bad)) if min(bad) == max(bad) else f"{hz(min(bad))}..{hz(max(bad))}"
+    return f"asks the {m.name} for {asked}, outside its range ({m.range_text()})"
+
+
+def open_analyser(resource: str | Any, model: str, **kwargs: Any) -> Any:
+    """The driver for ``model`` on ``resource`` (a VISA name or an open resource such as ``ReplayMessages``)."""
+    m = get(model)
+    if m.dialect == "IM3590":
+        from drivers.hioki_im3590 import HiokiIM3590
+
+        return HiokiIM3590(resource, model=model, **kwargs)
+    from drivers.impedance_analyzer import ImpedanceAnalyzer
+
+    return ImpedanceAnalyzer(resource, model=model, **kwargs)
