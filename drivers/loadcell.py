@@ -1,7 +1,18 @@
 """Load-cell indicator (Dacell UMMA-K10, 98 N, on a weighing indicator): continuous RS-232 frames.
 
-Frame: ``ST,GS,+0012.34Kg\\r\\n``: status ``ST`` stable / ``US`` unstable / ``OL`` overload, type
-``GS`` gross / ``NT`` net, a signed 7-character value and the unit (``Kg`` = kgf, or ``N``).
+The frames of the common indicators are read (docs/instruments_serial.md names each manual's section):
+
+* A&D (AD-4329 format 1, AD-4404; also CAS "18 bytes for AND", Dacell's stream): ``ST,GS,+0012.34kg\\r\\n``;
+  the unit may be 3 figures (`` kg``); out of range the 8-character data field is spaces but for the
+  decimal point (``OL,GS,     .  kg``);
+* Tiger (TI-02-P auto weight string): ``ST,GS, 0012.34,kg\\r\\n``: a space as the plus sign, a comma
+  before the unit;
+* CAS (CI-series "22 bytes for CAS"): ``ST,GS,<ID><lamp>,000013.5 kg\\r\\n``: a device-ID and a lamp
+  byte, an 8-byte data field without sign when positive, a blank before the unit.
+
+Header 1 ``ST`` stable / ``US`` unstable / ``OL`` overload; header 2 ``GS``/``G␠`` gross, ``NT``/``N␠``
+net, ``TR``/``T␠`` tare, ``PT`` preset tare (tare frames are not a force and are skipped); the unit
+``kg``, ``g``, ``t``, ``lb`` (displayed mass, times g_n) or ``N``, with or without a leading space.
 Commands (assumed, indicator-specific; see docs/instruments_serial.md): ``Z\\r\\n`` zero,
 ``T\\r\\n`` tare; the indicator does not answer, so each is confirmed from the stream.
 
@@ -27,8 +38,15 @@ from drivers.transcript import Transcript
 G_N = 9.80665  # N per kgf (standard gravity)
 CAPACITY_N = 98.0
 COUNT_KGF = 0.01  # display resolution of the frames (2 decimals)
-_FRAME = re.compile(rb"(ST|US|OL),(GS|NT),([+-][0-9. ]{7}) ?(kg|Kg|KG|N)\r\n")
-_UNIT_N = {b"kg": G_N, b"Kg": G_N, b"KG": G_N, b"N": 1.0}
+LB_KG = 0.45359237
+# header 1, header 2, an optional CAS device-ID + lamp byte pair, the 8-character data field (a sign or
+# a digit, then digits, spaces and the decimal point), an optional comma (Tiger) or blank (CAS), the unit
+_FRAME = re.compile(rb"(ST|US|OL),(GS|NT|TR|PT|G |N |T ),(?:[^,\r\n]{2},)?([-+ 0-9][0-9. ]{7})[, ]?"
+                    rb" ?(kg|Kg|KG|g|t|lb|N)\r?\n")
+_UNIT_N = {b"kg": G_N, b"Kg": G_N, b"KG": G_N, b"g": G_N * 1e-3, b"t": G_N * 1e3, b"lb": G_N * LB_KG, b"N": 1.0}
+_VALUE = re.compile(rb"[-+ 0-9] *[0-9]*\.?[0-9]*")  # blank padding after the sign, one decimal point at most
+_KIND = {b"G ": "GS", b"N ": "NT", b"T ": "TR"}
+FORCE_KINDS = ("GS", "NT")  # TR / PT frames carry the tare, not the load
 
 
 class Clock(Protocol):
@@ -42,7 +60,7 @@ class Clock(Protocol):
 @dataclass(frozen=True)
 class Frame:
     status: str  # "ST" | "US" | "OL"
-    kind: str  # "GS" | "NT"
+    kind: str  # "GS" | "NT" | "TR" | "PT" (``G ``, ``N ``, ``T `` read as GS, NT, TR)
     force_N: float  # nan when the value field of an OL frame is not a number
     raw: bytes
     seq: int
@@ -64,13 +82,13 @@ def parse_frame(line: bytes, seq: int = 0, t_wall: float = 0.0) -> Frame | None:
     if m is None:
         return None
     status, kind, value, unit = m.groups()
-    try:
+    if _VALUE.fullmatch(value) and any(c in b"0123456789" for c in value):
         force = float(value.replace(b" ", b"")) * _UNIT_N[unit]
-    except ValueError:
-        if status != b"OL":
-            return None
-        force = float("nan")  # indicators print anything on overload
-    return Frame(status.decode(), kind.decode(), force, line, seq, t_wall)
+    elif status == b"OL":
+        force = float("nan")  # out of range: the digits are spaces (A&D), or anything
+    else:
+        return None
+    return Frame(status.decode(), _KIND.get(kind, kind.decode()), force, line, seq, t_wall)
 
 
 class LoadCell(SerialInstrument):
@@ -154,6 +172,9 @@ class LoadCell(SerialInstrument):
                 frame = parse_frame(line, self._seq + 1, now)
                 if frame is None:
                     self._note_garbage(line)
+                elif frame.kind not in FORCE_KINDS:
+                    self._garbage.clear()  # a tare frame: the line is alive, but it is not the load
+                    self._garbage_n = 0
                 else:
                     self._seq += 1
                     self._frames.append(frame)
