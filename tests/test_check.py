@@ -4,12 +4,7 @@ served by `labrig sim --impedance e4990a` passes the check and a paper sweep on 
 from __future__ import annotations
 
 import json
-import os
-import signal
-import subprocess
-import sys
 import time
-from pathlib import Path
 
 import pytest
 import tomli_w
@@ -55,28 +50,18 @@ def test_check_names_the_instrument_whose_server_is_stopped(bench_rig, capsys, s
     assert err.strip() == f"labrig check: instrument fault: {stop}"
 
 
-def _labrig(*args: str) -> list[str]:
-    return [sys.executable, "-c", "from labrig.cli import entry; entry()", *args]
-
-
-def test_e4990a_bench_checks_ok_and_refuses_a_paper_sweep_before_anything_moves(tmp_path):
-    rig = tmp_path / "rig.toml"
-    sim = subprocess.Popen(_labrig("sim", "--rig-out", str(rig), "--impedance", "e4990a"),
-                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    try:
-        deadline = time.monotonic() + 30
-        while not rig.exists():
-            assert sim.poll() is None and time.monotonic() < deadline, sim.stderr.read() if sim.poll() is not None else "no rig file"
-            time.sleep(0.1)
-        check = subprocess.run(_labrig("check", "--rig", str(rig)), capture_output=True, text=True, timeout=60)
-        assert check.returncode == 0, check.stdout + check.stderr
-        assert "E4990A" in check.stdout and "20 Hz to 120 MHz" in check.stdout
-        run = subprocess.run(_labrig("run", "paper-sweep", "--rig", str(rig), "--out", str(tmp_path / "p.h5"), "-q"),
-                             capture_output=True, text=True, timeout=60)
-        assert run.returncode == 2
-        assert run.stderr.strip().splitlines() == [
-            run.stderr.strip()] and "E4990A measures 20 Hz to 120 MHz" in run.stderr and "100 mHz" in run.stderr
-        assert not (tmp_path / "p.h5").exists()  # refused before anything moved: no session was even opened
-    finally:
-        sim.send_signal(signal.SIGINT)
-        sim.wait(timeout=20)
+def test_e4990a_bench_checks_ok_and_refuses_a_paper_sweep_before_anything_moves(tmp_path, capsys):
+    """What `labrig sim --impedance e4990a` serves (SimulatedInstruments(impedance_model="E4990A"))."""
+    clock = ScaledClock(1000.0, time.time())
+    with SimulatedInstruments(Bench(clock, seed=4), seed=4, impedance_model="E4990A") as sims:
+        rig = tmp_path / "rig.toml"
+        rig.write_text(tomli_w.dumps(rig_file_data(sims, clock, "paper")))
+        assert main(["check", "--rig", str(rig)]) == 0
+        out = capsys.readouterr().out
+        assert "E4990A" in out and "20 Hz to 120 MHz" in out
+        before = sims.clamp.target_N
+        assert main(["run", "paper-sweep", "--rig", str(rig), "--out", str(tmp_path / "p.h5"), "-q"]) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and "E4990A measures 20 Hz to 120 MHz" in err and "100 mHz" in err
+        assert sims.clamp.target_N == before  # the clamp was never asked to move
+        assert not (tmp_path / "p.h5").exists()  # refused before a session was opened
