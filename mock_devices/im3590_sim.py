@@ -67,6 +67,11 @@ class Im3590Sim(ScpiAnalyserSim):
         self.busy_until = float("-inf")
         self.data: tuple[float, complex] | None = None
 
+    def setting(self, header, parse, attr, show, guard=None) -> None:  # type: ignore[override]
+        """As the base, but a query answer carries its header (``:FREQUENCY 1.00000E+03``) while ``:HEADer ON``."""
+        name = ":" + header.replace("#", "").upper()
+        super().setting(header, parse, attr, lambda v: f"{name} {show(v)}" if self.header else show(v), guard)
+
     def measured_reply(self, request: Request) -> int:
         return len([p for p in self.parameters.values() if p != "OFF"]) if "MEAS" in request.header.upper() else 0
 
@@ -89,7 +94,7 @@ class Im3590Sim(ScpiAnalyserSim):
         setting("TRIGger", lambda a: word(a, TRIGGERS), "trigger", str)
         setting("TRIGger:DELay", lambda a: parse_number(a, 0.0, 9.0), "trigger_delay_s", hioki_number)
         add("PARameter#", self._set_parameter)
-        add("PARameter#?", lambda r: self.parameters[self._slot(r)])
+        add("PARameter#?", lambda r: (f":PARAMETER{self._slot(r)} " if self.header else "") + self.parameters[self._slot(r)])
         add("*TRG", self._trg)
         add("*OPC?", lambda r: (self.wait_idle(), "1")[1])
         add("*WAI", lambda r: self.wait_idle())

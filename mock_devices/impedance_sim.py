@@ -40,6 +40,8 @@ __all__ = ["FAULTS", "GARBAGE", "OVERLOAD", "ImpedanceAnalyzerSim", "DemoBench",
 SWEEP_TYPES = {"LIN": "LIN", "LINEAR": "LIN", "LOG": "LOG", "LOGARITHMIC": "LOG", "SEGM": "SEGM", "SEGMENT": "SEGM"}
 TRIGGER_SOURCES = {"INT": "INT", "INTERNAL": "INT", "EXT": "EXT", "EXTERNAL": "EXT", "BUS": "BUS",
                    "MAN": "MAN", "MANUAL": "MAN"}
+DATA_FORMATS = {"ASC": "ASC", "ASCII": "ASC", "REAL": "REAL", "REAL32": "REAL32"}
+BYTE_ORDERS = {"NORM": "NORM", "NORMAL": "NORM", "SWAP": "SWAP", "SWAPPED": "SWAP"}
 SOURCE_MODES = {"VOLT": "VOLT", "VOLTAGE": "VOLT", "CURR": "CURR", "CURRENT": "CURR"}
 # E4990A measurement parameters (CALC:PAR:DEF); the simulator formats the ones it can compute from Z
 PARAMETERS = {w: w for w in ("Z", "Y", "R", "X", "G", "B", "LS", "LP", "CS", "CP", "RS", "RP", "Q", "D",
@@ -81,6 +83,7 @@ class ImpedanceAnalyzerSim(ScpiAnalyserSim):
         self.trigger_source, self.continuous, self.armed = "INT", True, False
         self.averaging, self.avg_count, self.aperture, self.bandwidth = False, 16, 1, 1
         self.parameters = {1: "Z", 2: "TZ", 3: "R", 4: "X"}
+        self.data_format, self.byte_order = "ASC", "NORM"
         self.trace_count = 2
         self.busy_until = float("-inf")
         self.data: tuple[np.ndarray, np.ndarray] | None = None
@@ -127,7 +130,10 @@ class ImpedanceAnalyzerSim(ScpiAnalyserSim):
         self.setting("TRIGger[:SEQuence]:SOURce", lambda a: word(a, TRIGGER_SOURCES), "trigger_source", str)
         self.setting("INITiate#:CONTinuous", parse_bool, "continuous", lambda v: str(int(v)), ch)
         self.setting("CALCulate#:PARameter:COUNt", lambda a: int(parse_number(a, 1, 4)), "trace_count", str, ch)
-        self._fixed("FORMat[:DATA]", "ASC", {"ASC", "ASCII"})
+        self.setting("FORMat[:DATA]", lambda a: word(a, DATA_FORMATS), "data_format", str)
+        self.setting("FORMat:BORDer", lambda a: word(a, BYTE_ORDERS), "byte_order", str)
+        add("STATus:OPERation:CONDition?", lambda r: "16" if self.busy_until > self.bench.clock.now() else "0")
+        add("TRIGger[:SEQuence][:IMMediate]", self._trigger_now)
         self._fixed("DISPlay:ENABle", "1", {"ON", "OFF", "1", "0"})
         add("CALCulate#:PARameter#:DEFine", self._define)
         add("CALCulate#:PARameter#:DEFine?", lambda r: self.parameters[self._trace(r)])
@@ -136,7 +142,7 @@ class ImpedanceAnalyzerSim(ScpiAnalyserSim):
         add("SENSe#:SEGMent:DATA", self._set_segments)
         add("SENSe#:SEGMent:DATA?", self._get_segments)
         add("SENSe#:SWEep:POINts?", lambda r: (ch(r), str(self.frequencies().size))[1])
-        add("SENSe#:FREQuency:DATA?", lambda r: (ch(r), ",".join(num(f) for f in self.frequencies()))[1])
+        add("SENSe#:FREQuency:DATA?", lambda r: (ch(r), self._values(self.frequencies()))[1])
         add("INITiate#[:IMMediate]", lambda r: (ch(r), setattr(self, "armed", True))[1])
         add("TRIGger[:SEQuence]:SINGle", self._trigger)
         add("CALCulate#[:SELected]:DATA:RDATa?", lambda r: (ch(r), self._rdat(r))[1])
@@ -227,6 +233,26 @@ class ImpedanceAnalyzerSim(ScpiAnalyserSim):
         self.busy_until = self.bench.clock.now() + self.sweep_time_s(freqs)
         self.sweeps.append({"freqs_Hz": freqs, "ac_V": self.ac_V, "bias_V": bias})
 
+    def _values(self, values: np.ndarray) -> str:
+        """Data in the FORMat chosen: ASCII numbers, or an IEEE 488.2 definite-length block of 64-bit
+        (REAL) or 32-bit (REAL32) floats, big-endian (NORMal) or little-endian (SWAPped)."""
+        if self.data_format == "ASC":
+            return ",".join(num(v) for v in values)
+        dtype = (">" if self.byte_order == "NORM" else "<") + ("f8" if self.data_format == "REAL" else "f4")
+        body = np.asarray(values, dtype=dtype).tobytes()
+        size = str(len(body))
+        return f"#{len(size)}{size}" + body.decode("latin-1")
+
+    def _trigger_now(self, r: Request) -> None:
+        """``:TRIG[:SEQ][:IMM]``: a sweep now, whatever the trigger source, if the channel waits for one."""
+        if not (self.continuous or self.armed):
+            raise ScpiError(-211, "Trigger ignored")
+        source, self.trigger_source = self.trigger_source, "BUS"
+        try:
+            self._trigger(r)
+        finally:
+            self.trigger_source = source
+
     def _bus_trigger(self, r: Request) -> None:
         """``*TRG``: a sweep when the trigger source is BUS (else -211, as the instrument)."""
         self._trigger(r)
@@ -239,13 +265,13 @@ class ImpedanceAnalyzerSim(ScpiAnalyserSim):
         fn = _FORMATTED.get(self.parameters[1])
         if fn is None:
             raise ScpiError(-221, "Settings conflict")  # a parameter this simulator does not compute
-        return ",".join(f"{num(v)},{num(0.0)}" for v in fn(z, f))
+        return self._values(np.column_stack([fn(z, f), np.zeros(f.size)]).ravel())
 
     def _rdat(self, r: Request) -> str:
         if self.data is None:
             raise ScpiError(-230, "Data corrupt or stale")
         z = self.data[1]
-        return ",".join(f"{num(v.real)},{num(v.imag)}" for v in z)
+        return self._values(np.column_stack([z.real, z.imag]).ravel())
 
 
 

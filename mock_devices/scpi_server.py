@@ -392,7 +392,7 @@ class ScpiServer:
                         continue
                     reply = self.handle(text)
                     if reply is not None and conn in self._conns:
-                        conn.sendall(reply.encode("ascii") + b"\n")
+                        conn.sendall(reply.encode("latin-1") + b"\n")  # latin-1: binary blocks pass byte for byte
         except OSError:
             pass  # the client went away or drop() closed the socket
         finally:
