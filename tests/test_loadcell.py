@@ -310,3 +310,24 @@ def test_an_overload_during_a_run_drives_to_zero_and_exits_3():
         res = runner.run()
         assert sims.daq.ao_output_V() == 0.0
     assert res.exit_code == 3 and "loadcell" in res.reason and "overload" in res.reason.lower()
+
+
+@pytest.mark.parametrize("transport", ["pty", "tcp"])
+def test_project_sperm_scales_client_reads_the_simulator(transport):
+    """woxuankai/project_sperm's scales module (an A&D-format reader): open the port, flush input, read a line to
+    drop a partial one, read the next, weight = float(line[6:14] without spaces). Written anew as facts; the
+    18-byte A&D frame ("18 bytes for AND" in the CAS manuals) is what it slices."""
+    import serial
+
+    bench = Bench(1.2345 * G_N)
+    with serve(LoadCellSim(bench), transport) as server:
+        port = serial.serial_for_url(server.address, timeout=1.0)
+        try:
+            port.reset_input_buffer()
+            port.readline()
+            line = port.readline()
+        finally:
+            port.close()
+    assert len(line) == 18 and line.endswith(b"\r\n") and line[:6] in (b"ST,GS,", b"US,GS,")
+    assert float(line[6:14].decode().replace(" ", "")) == pytest.approx(1.23, abs=0.005)
+    assert line[14:16] == b"kg"
