@@ -7,7 +7,7 @@ The IM3590 speaks a SCPI-like command set (IM3590 communication instruction manu
 register (``*ESR?``), not an error queue.
 
 A spectrum is measured the way the published clients do it, point by point in LCR mode: set the
-frequency, ``*TRG``, ``:MEASure?`` -> ``|Z|,phase(deg)``. The wait for one point is ``timeout_s``
+frequency, ``*TRG``, ``:MEASure?`` -> ``|Z|,phase(deg)`` (one program message per point, with ``*ESR?``). The wait for one point is ``timeout_s``
 plus twice a few cycles of its frequency, so a 1 mHz point does not time out.
 """
 
@@ -21,7 +21,7 @@ import pyvisa
 from drivers import analyser_models
 from drivers.errors import MalformedReply
 from drivers.impedance_analyzer import estimate_sweep_s
-from drivers.scpi import control, fmt, on_off, parse_floats
+from drivers.scpi import control, fmt, on_off, parse_floats, raise_for_errors
 from drivers.transcript import Transcript
 from drivers.visa_instrument import VisaInstrument
 
@@ -58,7 +58,9 @@ class HiokiIM3590(VisaInstrument):
 
     def errors(self) -> list[tuple[int, str]]:
         """What ``*ESR?`` reports (reading it clears it): one (code, message) per error bit set."""
-        reply = self._ask("*ESR?")
+        return self._esr_errors(self._ask("*ESR?"))
+
+    def _esr_errors(self, reply: str) -> list[tuple[int, str]]:
         try:
             esr = int(float(reply))
         except ValueError:
@@ -89,12 +91,17 @@ class HiokiIM3590(VisaInstrument):
         self.configure_list(np.geomspace(f_start_Hz, f_stop_Hz, int(points)), ac_V, bias_V)
 
     def measure_point(self, f_Hz: float) -> complex:
-        """One frequency: set it, trigger, read ``|Z|,phase``; the instrument's refusal raises."""
-        self._send(f":FREQuency {fmt(f_Hz)}")
-        self._send("*TRG")
+        """One frequency in one program message, ``:FREQuency f;*TRG;:MEASure?;*ESR?`` -> ``|Z|,phase;esr``: one
+        round trip (separate small writes would wait on TCP's delayed ACK, ~40 ms each), and the status read
+        in the same reply, so a refused frequency never passes the previous point's value off as this one's."""
+        cmd = f":FREQuency {fmt(f_Hz)};*TRG;:MEASure?;*ESR?"
         wait = max(self.sweep_timeout_s or 0.0, self.timeout_s + 2.0 * estimate_sweep_s([f_Hz]))
-        values = parse_floats(self.device, ":MEASure?", self._ask_long(":MEASure?", wait))
-        self.check_errors()  # a refused frequency would leave the last one's value: never take it
+        reply = self._ask_long(cmd, wait)
+        measured, sep, esr = reply.rpartition(";")
+        if not sep:
+            raise MalformedReply(self.device, f"{cmd} answered {reply[:60]!r}, expected |Z|,phase;esr")
+        raise_for_errors(self.device, self._esr_errors(esr))
+        values = parse_floats(self.device, ":MEASure?", measured)
         if values.size != 2:
             raise MalformedReply(self.device, f":MEASure? answered {values.size} values, expected |Z|,phase")
         mag, phase_deg = values

@@ -114,9 +114,10 @@ class Im3590Sim(ScpiAnalyserSim):
             raise ScpiError(-221, "Settings conflict")  # labrig simulates LCR mode only
         f = self.f_Hz
         bias = self.bias_V if self.bias_on else 0.0
+        t0 = self.bench.clock.now()  # the measurement starts now; computing Z is part of its duration
         z = complex(np.asarray(self.bench.impedance(np.array([f]), self.ac_V, bias), dtype=complex).ravel()[0])
         self.data = (f, z)
-        self.busy_until = self.bench.clock.now() + self.trigger_delay_s + self.averaging * self.measuring_time_s([f])
+        self.busy_until = t0 + self.trigger_delay_s + self.averaging * self.measuring_time_s([f])
         self.measurements.append({"f_Hz": f, "ac_V": self.ac_V, "bias_V": bias})
 
     def _trg(self, r: Request) -> None:
