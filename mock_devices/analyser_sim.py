@@ -153,6 +153,15 @@ class ScpiAnalyserSim:
     def stop(self) -> None:
         self.server.stop()
 
+    def serve_forever(self) -> None:
+        """Start, print the resource name, serve until Ctrl-C or ``stop()`` (the modules' command lines)."""
+        with self:
+            print(self.resource_name, flush=True)
+            try:
+                self.server.stopping.wait()
+            except KeyboardInterrupt:
+                pass
+
     def __enter__(self) -> "ScpiAnalyserSim":
         return self.start()
 

@@ -145,12 +145,7 @@ def main(argv: list[str] | None = None) -> int:
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.parse_args(argv)
-    with Im3590Sim(DemoBench()) as sim:
-        print(sim.resource_name, flush=True)
-        try:
-            sim.server.stopping.wait()
-        except KeyboardInterrupt:
-            pass
+    Im3590Sim(DemoBench()).serve_forever()
     return 0
 
 

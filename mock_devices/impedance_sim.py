@@ -356,12 +356,7 @@ def main(argv: list[str] | None = None) -> int:
         for p in record(args.record):
             print(p)
     if args.serve:
-        with ImpedanceAnalyzerSim(DemoBench()) as sim:
-            print(sim.resource_name, flush=True)
-            try:
-                sim.server.stopping.wait()
-            except KeyboardInterrupt:
-                pass
+        ImpedanceAnalyzerSim(DemoBench()).serve_forever()
     if not (args.record or args.serve):
         parser.print_usage()
         return 2
