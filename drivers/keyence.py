@@ -187,6 +187,13 @@ class KeyenceLK2000(KeyenceLKG):
     measure = Command("M{out}", "Measured value of OUT<out> (unconfirmed on LK-2000).", confirmed=False, out=(0, 1, 2))
     autozero_on = Command("V{out}", "Auto-zero ON (unconfirmed on LK-2000).", confirmed=False, out=(0, 1, 2))
     autozero_off = Command("W{out}", "Auto-zero OFF (unconfirmed on LK-2000).", confirmed=False, out=(0, 1, 2))
+    # the LK-G communication-chapter commands, same bytes assumed: none checked against an LK-2000 manual
+    reset_cmd = Command("VR,{out}", "Reset (unconfirmed on LK-2000).", confirmed=False, out=(0, 1, 2))
+    key_lock = Command("KL,{on}", "Key lock (unconfirmed on LK-2000).", confirmed=False, on=(0, 1))
+    program_write = Command("PW,{n}", "Program change (unconfirmed on LK-2000).", confirmed=False, n=tuple(range(8)))
+    program_read = Command("PR", "Program check (unconfirmed on LK-2000).", confirmed=False)
+    to_communication = Command("Q0", "Communication mode (unconfirmed on LK-2000).", confirmed=False)
+    to_general = Command("R0", "General mode (unconfirmed on LK-2000).", confirmed=False)
 
 
 DIALECTS: dict[str, type[KeyenceLKG]] = {"LK-G": KeyenceLKG, "LK-2000": KeyenceLK2000}

@@ -63,8 +63,9 @@ def _keyence(cfg: RigFile) -> tuple[str, str]:
 
     k = cfg.instruments.keyence
     with open_keyence(k.address, dialect=k.dialect, timeout_s=TIMEOUT_S) as laser:
+        program = laser.program()
         d = laser.read_displacement(1)
-    return f"Keyence {k.dialect} controller", f"OUT1 {d * 1e3:+.4f} mm"
+    return f"Keyence {k.dialect} controller, program {program}", f"OUT1 {d * 1e3:+.4f} mm"
 
 
 def _loadcell(cfg: RigFile) -> tuple[str, str]:
