@@ -331,3 +331,12 @@ def test_project_sperm_scales_client_reads_the_simulator(transport):
     assert len(line) == 18 and line.endswith(b"\r\n") and line[:6] in (b"ST,GS,", b"US,GS,")
     assert float(line[6:14].decode().replace(" ", "")) == pytest.approx(1.23, abs=0.005)
     assert line[14:16] == b"kg"
+
+
+def test_cr_only_terminator_and_a_cr_lf_split_across_reads():
+    """A&D lets a frame end in CR alone; a CR LF may arrive in two reads (the LF must not become a blank line)."""
+    lc = _stream(b"ST,GS,+0001.00kg\rST,GS,+0002.00kg\r")
+    assert lc.force().force_N == pytest.approx(2.0 * G_N) and lc.bytes_skipped == 0
+    lc._feed(b"ST,GS,+0003.00kg\r")
+    lc._feed(b"\nST,GS,+0004.00kg\r\n")
+    assert [round(f.force_N / G_N, 2) for f in lc._frames_after(0)][-2:] == [3.0, 4.0] and lc.bytes_skipped == 0
