@@ -41,7 +41,7 @@ class Bench:
 def rig(request):
     bench = Bench()
     sim = KeyenceSim(bench)
-    with serve(sim, request.param) as server, Keyence(server.address, timeout_s=0.2) as k:
+    with serve(sim, request.param) as server, Keyence(server.address, timeout_s=0.5) as k:
         yield bench, sim, k, server
 
 
@@ -118,7 +118,7 @@ def test_disconnect_then_reconnect(rig):
         with pytest.raises(errors.Disconnected):
             k.read_displacement(1)
     sim.clear_fault()
-    with Keyence(server.address, timeout_s=0.2) as k2:  # a pty comes back under a new path
+    with Keyence(server.address, timeout_s=0.5) as k2:  # a pty comes back under a new path
         assert k2.read_displacement(1) == pytest.approx(2e-3, abs=1e-12)
 
 
