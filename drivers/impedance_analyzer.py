@@ -1,4 +1,4 @@
-"""Impedance analyser / potentiostat over VISA, using a Keysight E4990A SCPI subset.
+"""Impedance analyser over VISA, using a Keysight E4990A SCPI subset (models E4990A and SIM-WIDE).
 
 The driver is given a VISA resource name (``TCPIP::host::5025::SOCKET``, ``TCPIP::host::inst0::INSTR``,
 ...) or an already-open message-based resource (e.g. ``drivers.transcript.ReplayMessages``) and cannot
@@ -8,26 +8,18 @@ subset and what is assumed about the E4990A are in ``docs/instruments_impedance.
 
 from __future__ import annotations
 
-import logging
-import select
-import socket
-import time
-from contextlib import contextmanager
-from typing import Any, Iterator, Sequence
+from typing import Any, Sequence
 
 import numpy as np
 import pyvisa
-from pyvisa import constants
 
-from drivers.errors import Disconnected, InstrumentError, InstrumentTimeout, MalformedReply
-from drivers.scpi import control, fmt, measurement, on_off, parse_error, parse_floats, raise_for_errors
-from drivers.transcript import RecordingMessages, Transcript
-
-log = logging.getLogger(__name__)
+from drivers import analyser_models
+from drivers.errors import MalformedReply
+from drivers.scpi import control, fmt, measurement, on_off, parse_error, parse_floats
+from drivers.transcript import Transcript
+from drivers.visa_instrument import VisaInstrument
 
 MAX_LIST_POINTS = 201  # E4990A segment table: at most 201 segments (one frequency each here)
-_LOST = {constants.StatusCode.error_connection_lost, constants.StatusCode.error_io,
-         constants.StatusCode.error_invalid_object, constants.StatusCode.error_closing_failed}
 
 
 def estimate_sweep_s(freqs_Hz: np.ndarray, cycles: float = 5.0, min_point_s: float = 0.1) -> float:
@@ -36,7 +28,7 @@ def estimate_sweep_s(freqs_Hz: np.ndarray, cycles: float = 5.0, min_point_s: flo
     return float(np.sum(np.maximum(cycles / f, min_point_s))) if f.size else 0.0
 
 
-class ImpedanceAnalyzer:
+class ImpedanceAnalyzer(VisaInstrument):
     """Complex impedance spectra from an E4990A-compatible analyser (SI units throughout).
 
     ``timeout_s`` bounds ordinary replies; the wait for a sweep (``*OPC?``) is ``sweep_timeout_s`` or,
@@ -52,39 +44,12 @@ class ImpedanceAnalyzer:
 
     def __init__(self, resource: str | Any, *, transcript: Transcript | None = None, device: str = "impedance",
                  timeout_s: float = 5.0, sweep_timeout_s: float | None = None, reset: bool = False,
-                 resource_manager: pyvisa.ResourceManager | None = None):
-        self.device = device
-        self.timeout_s = float(timeout_s)
+                 resource_manager: pyvisa.ResourceManager | None = None, model: str = "E4990A"):
+        self.model = analyser_models.get(model)
         self.sweep_timeout_s = sweep_timeout_s
-        self._rm: pyvisa.ResourceManager | None = None
-        self._closed = False
         self._freqs: np.ndarray | None = None  # what the last configure asked for
-        if isinstance(resource, str):
-            self._raw = self._open(resource, resource_manager)
-        else:
-            self._raw = resource  # already open: a pyvisa resource or a ReplayMessages
-        self._res = RecordingMessages(self._raw, transcript, device) if transcript is not None else self._raw
-        self._set_timeout(self.timeout_s)
-        try:
-            self._setup(reset)
-        except BaseException:
-            self._release()  # a refused connection must not leak the socket or our resource manager
-            raise
-
-    # ---- connection -------------------------------------------------------------------------
-
-    def _open(self, name: str, rm: pyvisa.ResourceManager | None) -> Any:
-        if rm is None:
-            rm = self._rm = pyvisa.ResourceManager("@py")
-        kw: dict[str, Any] = {"write_termination": "\n", "open_timeout": int(self.timeout_s * 1000)}
-        if name.upper().endswith("::SOCKET"):
-            kw["read_termination"] = "\n"  # raw sockets have no END signal
-        try:
-            return rm.open_resource(name, **kw)
-        except (ValueError, TypeError):
-            raise  # a malformed resource name is the caller's error, not the instrument's
-        except Exception as e:  # pyvisa-py raises a bare Exception when connect() fails
-            raise Disconnected(self.device, f"cannot open {name}: {e}") from e
+        super().__init__(resource, transcript=transcript, device=device, timeout_s=timeout_s, reset=reset,
+                         resource_manager=resource_manager)
 
     def _setup(self, reset: bool) -> None:
         """Known state: ASCII data, trace 1 = impedance Z, bus trigger, channel 1 held until armed."""
@@ -93,80 +58,6 @@ class ImpedanceAnalyzer:
         for cmd in ("*CLS", ":FORM:DATA ASC", ":CALC1:PAR1:DEF Z", ":TRIG:SOUR BUS", ":INIT1:CONT OFF"):
             self._send(cmd)
         self.check_errors()
-
-    def _set_timeout(self, seconds: float) -> None:
-        self._raw.timeout = int(max(seconds, 0.001) * 1000)  # pyvisa wants ms
-
-    def _socket(self) -> socket.socket | None:
-        """The TCP socket under a pyvisa-py SOCKET resource, if that is what we have."""
-        try:
-            sock = self._raw.visalib.sessions[self._raw.session].interface
-        except Exception:
-            return None
-        return sock if isinstance(sock, socket.socket) else None
-
-    def _peer_closed(self) -> bool:
-        """pyvisa-py reports a socket closed by the instrument as a timeout; look at the socket."""
-        sock = self._socket()
-        if sock is None:
-            return False
-        try:
-            readable, _, _ = select.select([sock], [], [], 0)
-            return bool(readable) and sock.recv(1, socket.MSG_PEEK) == b""
-        except (OSError, ValueError):
-            return True
-
-    @contextmanager
-    def _io(self, what: str, timeout_s: float | None = None) -> Iterator[None]:
-        """Turn transport failures into ``drivers.errors``."""
-        try:
-            yield
-        except InstrumentError:
-            raise
-        except pyvisa.errors.VisaIOError as e:
-            if e.error_code == constants.StatusCode.error_timeout:
-                if self._peer_closed():
-                    raise Disconnected(self.device, f"connection closed by the instrument during {what}") from e
-                wait = self.timeout_s if timeout_s is None else timeout_s
-                raise InstrumentTimeout(self.device, f"no reply to {what} within {wait:g} s") from e
-            if e.error_code in _LOST:
-                raise Disconnected(self.device, f"{what}: {e.description}") from e
-            raise InstrumentError(self.device, f"{what}: {e}") from e
-        except pyvisa.errors.InvalidSession as e:
-            raise Disconnected(self.device, f"{what}: session is closed") from e
-        except OSError as e:  # refused, reset, broken pipe
-            raise Disconnected(self.device, f"{what}: {e}") from e
-        except UnicodeDecodeError as e:
-            raise MalformedReply(self.device, f"{what}: reply is not ASCII") from e
-
-    def _send(self, cmd: str) -> None:
-        if self._closed:
-            raise Disconnected(self.device, "driver is closed")
-        with self._io(cmd):
-            self._res.write(cmd)
-
-    def _read(self, what: str, timeout_s: float | None = None) -> str:
-        with self._io(what, timeout_s):
-            if timeout_s is not None:
-                self._set_timeout(timeout_s)
-            try:
-                return self._res.read().strip()
-            finally:
-                if timeout_s is not None:
-                    self._set_timeout(self.timeout_s)
-
-    def _ask(self, cmd: str) -> str:
-        self._send(cmd)
-        return self._read(cmd)
-
-    # ---- public -----------------------------------------------------------------------------
-
-    def identify(self) -> str:
-        """``*IDN?``: manufacturer,model,serial,firmware."""
-        idn = self._ask("*IDN?")
-        if idn.count(",") != 3:
-            raise MalformedReply(self.device, f"*IDN? answered {idn[:60]!r}, not 4 comma-separated fields")
-        return idn
 
     def errors(self) -> list[tuple[int, str]]:
         """Drain the error queue: ``[(code, message), ...]``, empty when ``+0,"No error"``."""
@@ -177,10 +68,6 @@ class ImpedanceAnalyzer:
                 return found
             found.append((code, msg))
         raise MalformedReply(self.device, "SYST:ERR? never answered +0 (error queue does not drain)")
-
-    def check_errors(self) -> None:
-        """Raise ``InstrumentErrorReply`` if the instrument queued any error."""
-        raise_for_errors(self.device, self.errors())
 
     def _set_source(self, ac_V: float, bias_V: float) -> None:
         if not ac_V > 0:
@@ -229,7 +116,7 @@ class ImpedanceAnalyzer:
         wait = self.sweep_timeout_s
         if wait is None:
             wait = self.timeout_s + 2.0 * estimate_sweep_s(self._freqs if self._freqs is not None else [])
-        done = self._wait_opc(wait)
+        done = self._ask_long("*OPC?", wait)
         if done not in ("1", "+1"):
             raise MalformedReply(self.device, f"*OPC? answered {done[:60]!r}, expected 1")
         freqs = parse_floats(self.device, ":SENS1:FREQ:DATA?", self._ask(":SENS1:FREQ:DATA?"))
@@ -240,19 +127,6 @@ class ImpedanceAnalyzer:
             raise MalformedReply(self.device, f"{raw.size} data values for {freqs.size} points (want re,im pairs)")
         self.check_errors()
         return freqs, raw[0::2] + 1j * raw[1::2]
-
-    def _wait_opc(self, wait_s: float) -> str:
-        """``*OPC?`` with a long wait, read in short slices on a socket so a dropped link shows at once."""
-        self._send("*OPC?")
-        if self._socket() is None:
-            return self._read("*OPC? (sweep)", timeout_s=wait_s)
-        deadline = time.monotonic() + wait_s
-        while True:
-            try:
-                return self._read("*OPC? (sweep)", timeout_s=min(0.5, max(deadline - time.monotonic(), 0.001)))
-            except InstrumentTimeout:  # a slice ran out; _io already turned a closed socket into Disconnected
-                if time.monotonic() >= deadline:
-                    raise InstrumentTimeout(self.device, f"sweep not complete within {wait_s:g} s (*OPC?)") from None
 
     def spectrum(self, f_start_Hz: float, f_stop_Hz: float, points: int, ac_V: float,
                  bias_V: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
@@ -267,28 +141,3 @@ class ImpedanceAnalyzer:
         self._send(":SOUR1:VOLT MIN")
         self.check_errors()
 
-    def close(self) -> None:
-        """Leave the source safe (best effort: the instrument may be gone) and release the resource."""
-        if self._closed:
-            return
-        try:
-            self.safe()
-        except InstrumentError as e:
-            log.warning("%s: could not make the source safe on close: %s", self.device, e)
-        self._release()
-
-    def _release(self) -> None:
-        self._closed = True
-        try:
-            self._raw.close()
-        except Exception as e:  # closing a dead socket can fail; nothing left to protect
-            log.debug("%s: close: %s", self.device, e)
-        if self._rm is not None:
-            self._rm.close()
-            self._rm = None
-
-    def __enter__(self) -> "ImpedanceAnalyzer":
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()

@@ -1,13 +1,25 @@
 """Load-cell indicator (Dacell UMMA-K10, 98 N, on a weighing indicator): continuous RS-232 frames.
 
-Frame: ``ST,GS,+0012.34Kg\\r\\n``: status ``ST`` stable / ``US`` unstable / ``OL`` overload, type
-``GS`` gross / ``NT`` net, a signed 7-character value and the unit (``Kg`` = kgf, or ``N``).
+The frames of the common indicators are read (docs/instruments_serial.md names each manual's section):
+
+* A&D (AD-4329 format 1, AD-4404; also CAS "18 bytes for AND", Dacell's stream): ``ST,GS,+0012.34kg\\r\\n``;
+  the unit may be 3 figures (`` kg``); out of range the 8-character data field is spaces but for the
+  decimal point (``OL,GS,     .  kg``);
+* Tiger (TI-02-P auto weight string): ``ST,GS, 0012.34,kg\\r\\n``: a space as the plus sign, a comma
+  before the unit;
+* CAS (CI-series "22 bytes for CAS"): ``ST,GS,<ID><lamp>,000013.5 kg\\r\\n``: a device-ID and a lamp
+  byte, an 8-byte data field without sign when positive, a blank before the unit.
+
+Header 1 ``ST`` stable / ``US`` unstable / ``OL`` overload; header 2 ``GS``/``G␠`` gross, ``NT``/``N␠``
+net, ``TR``/``T␠`` tare, ``PT`` preset tare (tare frames are not a force and are skipped); the unit
+``kg``, ``g``, ``t``, ``lb`` (displayed mass, times g_n) or ``N``, with or without a leading space; a frame
+ends in CR LF, CR (A&D's other choice) or LF.
 Commands (assumed, indicator-specific; see docs/instruments_serial.md): ``Z\\r\\n`` zero,
 ``T\\r\\n`` tare; the indicator does not answer, so each is confirmed from the stream.
 
 A reader thread (``background=True``) keeps the newest frame; with ``background=False`` the stream is
 parsed on demand from what the port already holds (deterministic, used for replay). Bytes that do
-not form a frame are skipped up to the next LF; ``force()`` raises ``StaleStream`` when no frame came
+not form a frame are skipped up to the next line end; ``force()`` raises ``StaleStream`` when no frame came
 for ``stale_s`` wall seconds (``MalformedReply`` if only garbage came) and ``Overload`` on ``OL``.
 """
 
@@ -27,8 +39,16 @@ from drivers.transcript import Transcript
 G_N = 9.80665  # N per kgf (standard gravity)
 CAPACITY_N = 98.0
 COUNT_KGF = 0.01  # display resolution of the frames (2 decimals)
-_FRAME = re.compile(rb"(ST|US|OL),(GS|NT),([+-][0-9. ]{7}) ?(kg|Kg|KG|N)\r\n")
-_UNIT_N = {b"kg": G_N, b"Kg": G_N, b"KG": G_N, b"N": 1.0}
+LB_KG = 0.45359237
+# header 1, header 2, an optional CAS device-ID + lamp byte pair, the 8-character data field (a sign or
+# a digit, then digits, spaces and the decimal point), an optional comma (Tiger) or blank (CAS), the unit
+_FRAME = re.compile(rb"(ST|US|OL),(GS|NT|TR|PT|G |N |T ),(?:[^,\r\n]{2},)?([-+ 0-9][0-9. ]{7})[, ]?"
+                    rb" ?(kg|Kg|KG|g|t|lb|N)(?:\r\n?|\n)")
+_UNIT_N = {b"kg": G_N, b"Kg": G_N, b"KG": G_N, b"g": G_N * 1e-3, b"t": G_N * 1e3, b"lb": G_N * LB_KG, b"N": 1.0}
+_EOL = re.compile(rb"\r\n|\r|\n")
+_VALUE = re.compile(rb"[-+ 0-9] *[0-9]*\.?[0-9]*")  # blank padding after the sign, one decimal point at most
+_KIND = {b"G ": "GS", b"N ": "NT", b"T ": "TR"}
+FORCE_KINDS = ("GS", "NT")  # TR / PT frames carry the tare, not the load
 
 
 class Clock(Protocol):
@@ -42,7 +62,7 @@ class Clock(Protocol):
 @dataclass(frozen=True)
 class Frame:
     status: str  # "ST" | "US" | "OL"
-    kind: str  # "GS" | "NT"
+    kind: str  # "GS" | "NT" | "TR" | "PT" (``G ``, ``N ``, ``T `` read as GS, NT, TR)
     force_N: float  # nan when the value field of an OL frame is not a number
     raw: bytes
     seq: int
@@ -64,13 +84,13 @@ def parse_frame(line: bytes, seq: int = 0, t_wall: float = 0.0) -> Frame | None:
     if m is None:
         return None
     status, kind, value, unit = m.groups()
-    try:
+    if _VALUE.fullmatch(value) and any(c in b"0123456789" for c in value):
         force = float(value.replace(b" ", b"")) * _UNIT_N[unit]
-    except ValueError:
-        if status != b"OL":
-            return None
-        force = float("nan")  # indicators print anything on overload
-    return Frame(status.decode(), kind.decode(), force, line, seq, t_wall)
+    elif status == b"OL":
+        force = float("nan")  # out of range: the digits are spaces (A&D), or anything
+    else:
+        return None
+    return Frame(status.decode(), _KIND.get(kind, kind.decode()), force, line, seq, t_wall)
 
 
 class LoadCell(SerialInstrument):
@@ -96,6 +116,7 @@ class LoadCell(SerialInstrument):
         self.stale_s, self.max_line = stale_s, max_line
         self._cond = threading.Condition()
         self._partial = bytearray()
+        self._skip_lf = False
         self._frames: deque[Frame] = deque(maxlen=256)
         self._seq = 0
         self._garbage = bytearray()  # unparseable bytes since the last good frame (a sample is kept)
@@ -145,24 +166,37 @@ class LoadCell(SerialInstrument):
             self._feed(chunk)
 
     def _feed(self, chunk: bytes) -> None:
+        """Split the stream into lines ended by CR LF, CR alone (A&D's other terminator) or LF, and parse each."""
         now = time.monotonic()
         with self._cond:
             self._partial += chunk
-            while (i := self._partial.find(b"\n")) >= 0:
-                line = bytes(self._partial[: i + 1])
-                del self._partial[: i + 1]
-                frame = parse_frame(line, self._seq + 1, now)
-                if frame is None:
-                    self._note_garbage(line)
-                else:
-                    self._seq += 1
-                    self._frames.append(frame)
-                    self._garbage.clear()
-                    self._garbage_n = 0
-            if len(self._partial) > self.max_line:  # no LF in sight: drop it, resync on the next LF
+            while True:
+                if self._skip_lf and self._partial:  # the LF of a CR LF split across two reads
+                    if self._partial[:1] == b"\n":
+                        del self._partial[:1]
+                    self._skip_lf = False
+                m = _EOL.search(self._partial)
+                if m is None:
+                    break
+                line = bytes(self._partial[: m.start()])
+                del self._partial[: m.end()]
+                self._skip_lf = m.group() == b"\r" and not self._partial
+                if line:
+                    self._take(parse_frame(line + b"\r\n", self._seq + 1, now), line)
+            if len(self._partial) > self.max_line:  # no line end in sight: drop it, resync on the next one
                 self._note_garbage(bytes(self._partial))
                 self._partial.clear()
             self._cond.notify_all()
+
+    def _take(self, frame: Frame | None, line: bytes) -> None:
+        if frame is None:
+            self._note_garbage(line)
+            return
+        self._garbage.clear()
+        self._garbage_n = 0
+        if frame.kind in FORCE_KINDS:  # a tare frame shows the line is alive, but it is not the load
+            self._seq += 1
+            self._frames.append(frame)
 
     def _note_garbage(self, data: bytes) -> None:
         self._garbage_n += len(data)

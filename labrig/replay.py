@@ -26,7 +26,7 @@ import numpy as np
 from drivers.clamp import MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
 from drivers.errors import ReplayMismatch
-from drivers.impedance_analyzer import ImpedanceAnalyzer
+from drivers.analyser_models import open_analyser
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
 from drivers.transcript import Exchange, ReplayMessages, ReplaySerial, Transcript
@@ -169,7 +169,7 @@ def replay_rig(reader: SessionReader) -> ReplayRig:
     reps: dict[str, Any] = {"daq": daq._replay}
     reps["impedance"] = ReplayMessages(tr["impedance"].for_device("impedance"), "impedance")
     reps["keyence"] = ReplaySerial(tr["keyence"].for_device("keyence"), "keyence")
-    analyzer = ImpedanceAnalyzer(reps["impedance"], sweep_timeout_s=600.0)
+    analyzer = open_analyser(reps["impedance"], ins.impedance.model, sweep_timeout_s=600.0)
     laser = open_keyence(reps["keyence"], dialect=ins.keyence.dialect)
     if ins.clamp.mode == "motor":
         reps["clamp"] = ReplaySerial(tr["clamp"].for_device("clamp"), "clamp")

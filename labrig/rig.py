@@ -8,7 +8,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [instruments.keyence]   address (pyserial URL or device path), dialect
     [instruments.loadcell]  address
     [instruments.clamp]     mode = "motor" (address) or "operator"
-    [instruments.impedance] address (VISA resource name)
+    [instruments.impedance] address (VISA resource name), model ("IM3590", "E4990A"; none = "SIM-WIDE",
+                            the analyser of labrig's older simulator: drivers/analyser_models.py)
     [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
                             channels, current_gain_A_per_V, displacement_m_per_V
 """
@@ -25,6 +26,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
 from drivers.errors import InstrumentError
+from drivers import analyser_models
 from drivers.impedance_analyzer import ImpedanceAnalyzer
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
@@ -71,6 +73,7 @@ class ClampCfg(_Strict):
 
 class ImpedanceCfg(_Strict):
     address: str
+    model: Literal[tuple(analyser_models.MODELS)] = analyser_models.LEGACY_MODEL  # type: ignore[valid-type]
 
 
 class DaqCfg(_Strict):
@@ -202,7 +205,7 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             transcript=tr,
         )
         opened.append(daq)
-        analyzer = ImpedanceAnalyzer(ins.impedance.address, transcript=tr, sweep_timeout_s=600.0)
+        analyzer = analyser_models.open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr, sweep_timeout_s=600.0)
         opened.append(analyzer)
         laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr)
         opened.append(laser)

@@ -17,6 +17,7 @@ import numpy as np
 
 from drivers.errors import InstrumentError
 from drivers.transcript import Transcript as DriverTranscript
+from drivers.analyser_models import out_of_range
 from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
 from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
@@ -51,6 +52,8 @@ def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:
             raise BadInput(f"{source}: step {s.name}: clamp force {a.force_N:.3g} N exceeds the rig's safety.max_force_N = {lim.max_force_N:g} N")
         elif isinstance(a, Impedance) and abs(a.ac_V) + abs(a.bias_V) > lim.max_drive_V:
             raise BadInput(f"{source}: step {s.name}: impedance drive exceeds safety.max_drive_V = {lim.max_drive_V:g} V")
+        elif isinstance(a, Impedance) and (problem := out_of_range(rig.config.instruments.impedance.model, a.freqs_Hz)):
+            raise BadInput(f"{source}: step {s.name}: {problem}")
 
 
 class Runner:

@@ -1,11 +1,21 @@
-"""Simulated impedance analyser speaking the E4990A SCPI subset of ``drivers.impedance_analyzer``.
+"""Simulated impedance analyser speaking the Keysight E4990A SCPI subset that labrig's driver and published
+E4990A clients use (models ``E4990A`` and ``SIM-WIDE`` of ``drivers.analyser_models``).
 
-The instrument keeps its sweep settings; ``:TRIG:SING`` takes Z from ``bench.impedance(f, ac, bias)``
-and occupies ``sum(max(cycles / f, min_point_s))`` simulated seconds on ``bench.clock``; ``*OPC?``
-answers ``1`` when the sweep is done. Frequency and level ranges default to the VersaSTAT 3's (the
-paper's instrument: 10 uHz..1 MHz), not the E4990A's 20 Hz floor, so IPMC spectra fit.
+The instrument keeps its sweep settings; ``:TRIG:SING`` (or ``*TRG`` with the bus trigger) takes Z from
+``bench.impedance(f, ac, bias)`` and occupies ``sum(max(cycles / f, min_point_s))`` simulated seconds on
+``bench.clock``; ``*OPC?`` and ``*WAI`` wait until the sweep is done. ``model="E4990A"`` keeps the real
+instrument's 20 Hz floor (data sheet: 20 Hz to 10/20/30/50/120 MHz); ``SIM-WIDE`` (the default, the
+analyser the recorded sessions were made on) reaches 10 uHz.
 
-Faults on demand (``inject``): ``disconnect``, ``timeout``, ``garbage``, ``error``, ``overrange``.
+Implemented headers (short or long forms, optional nodes, numeric suffixes): ``SENSe1:FREQuency:STARt|STOP``,
+``SENSe1:SWEep:TYPE|POINts``, ``SENSe1:SEGMent:DATA``, ``SENSe1:FREQuency:DATA?``, ``SENSe1:AVERage[:STATe]|
+:COUNt|:CLEar``, ``SENSe1:APERture[:TIME]``, ``SENSe1:BANDwidth[:RESolution]``, ``SOURce1:MODE``,
+``SOURce1:VOLTage[:LEVel][:IMMediate][:AMPLitude]``, ``SOURce1:BIAS:MODE|STATe|VOLTage[:LEVel]...``,
+``TRIGger[:SEQuence]:SOURce|SINGle``, ``INITiate1[:IMMediate]|CONTinuous``, ``CALCulate1:PARameter#:DEFine|
+COUNt``, ``CALCulate1[:SELected]:DATA:RDATa?|FDATa?``, ``FORMat[:DATA]``, ``SYSTem:PRESet``,
+``DISPlay:ENABle`` and the common commands (``*OPT?`` answers the frequency option, e.g. ``120``).
+
+Faults on demand (``inject``): see ``mock_devices.analyser_sim``.
 
 Recordings for the replay tests::
 
@@ -20,55 +30,61 @@ from typing import Any, Callable
 
 import numpy as np
 
+from drivers import analyser_models
+from mock_devices.analyser_sim import FAULTS, GARBAGE, OVERLOAD, ScpiAnalyserSim, num, one_arg, word
 from mock_devices.bench_api import BenchView
-from mock_devices.scpi_server import Request, ScpiError, ScpiServer, parse_bool, parse_number
+from mock_devices.scpi_server import Request, ScpiError, parse_bool, parse_number
 
-FAULTS = ("disconnect", "timeout", "garbage", "error", "overrange")
-OVERLOAD = "+9.9E37"
-GARBAGE = "#?!garbage~~"
+__all__ = ["FAULTS", "GARBAGE", "OVERLOAD", "ImpedanceAnalyzerSim", "DemoBench", "VirtualClock"]
+
 SWEEP_TYPES = {"LIN": "LIN", "LINEAR": "LIN", "LOG": "LOG", "LOGARITHMIC": "LOG", "SEGM": "SEGM", "SEGMENT": "SEGM"}
 TRIGGER_SOURCES = {"INT": "INT", "INTERNAL": "INT", "EXT": "EXT", "EXTERNAL": "EXT", "BUS": "BUS",
                    "MAN": "MAN", "MANUAL": "MAN"}
+DATA_FORMATS = {"ASC": "ASC", "ASCII": "ASC", "REAL": "REAL", "REAL32": "REAL32"}
+BYTE_ORDERS = {"NORM": "NORM", "NORMAL": "NORM", "SWAP": "SWAP", "SWAPPED": "SWAP"}
+SOURCE_MODES = {"VOLT": "VOLT", "VOLTAGE": "VOLT", "CURR": "CURR", "CURRENT": "CURR"}
+# E4990A measurement parameters (CALC:PAR:DEF); the simulator formats the ones it can compute from Z
+PARAMETERS = {w: w for w in ("Z", "Y", "R", "X", "G", "B", "LS", "LP", "CS", "CP", "RS", "RP", "Q", "D",
+                             "TZ", "TY", "VAC", "IAC", "VDC", "IDC", "IMP", "ADM")}
+_FORMATTED: dict[str, Callable[[np.ndarray, np.ndarray], np.ndarray]] = {
+    "Z": lambda z, f: np.abs(z), "TZ": lambda z, f: np.degrees(np.angle(z)), "R": lambda z, f: z.real,
+    "RS": lambda z, f: z.real, "X": lambda z, f: z.imag, "Y": lambda z, f: np.abs(1 / z),
+    "TY": lambda z, f: np.degrees(np.angle(1 / z)), "G": lambda z, f: (1 / z).real, "B": lambda z, f: (1 / z).imag,
+    "CS": lambda z, f: -1 / (2 * np.pi * f * z.imag), "D": lambda z, f: z.real / np.abs(z.imag),
+    "Q": lambda z, f: np.abs(z.imag) / z.real,
+}
 
+class ImpedanceAnalyzerSim(ScpiAnalyserSim):
+    """The E4990A (or SIM-WIDE) analyser on a loopback TCP port; ``resource_name`` is what the driver opens."""
 
-def _num(x: float) -> str:
-    return f"{x:+.12E}"
-
-
-def _word(arg: str, table: dict[str, str]) -> str:
-    try:
-        return table[arg.strip().upper()]
-    except KeyError:
-        raise ScpiError(-224, "Illegal parameter value") from None
-
-
-class ImpedanceAnalyzerSim:
-    """The analyser on a loopback TCP port; ``resource_name`` is what the driver opens."""
-
-    def __init__(self, bench: BenchView, *, port: int = 0, idn: str = "labrig,SIM-IMPEDANCE,0,0.1",
-                 freq_range_Hz: tuple[float, float] = (1e-5, 1e6), ac_range_V: tuple[float, float] = (5e-3, 1.0),
-                 bias_range_V: tuple[float, float] = (-10.0, 10.0), max_points: int = 1601,
+    def __init__(self, bench: BenchView, *, port: int = 0, model: str = "SIM-WIDE", idn: str | None = None,
+                 freq_range_Hz: tuple[float, float] | None = None, ac_range_V: tuple[float, float] | None = None,
+                 bias_range_V: tuple[float, float] | None = None, max_points: int = 1601,
                  max_segments: int = 201, cycles: float = 3.0, min_point_s: float = 0.05):
-        self.bench, self.idn = bench, idn
-        self.freq_range_Hz, self.ac_range_V, self.bias_range_V = freq_range_Hz, ac_range_V, bias_range_V
+        m = analyser_models.get(model)
+        self.model = m.name
+        self.freq_range_Hz = freq_range_Hz or m.freq_range_Hz
+        self.ac_range_V = ac_range_V or m.ac_range_V
+        self.bias_range_V = bias_range_V or m.bias_range_V
         self.max_points, self.max_segments = max_points, max_segments
-        self.cycles, self.min_point_s = cycles, min_point_s
-        self.server = ScpiServer(port, name="impedance-sim")
-        self.server.reply_filter = self._filter
-        self.fault: str | None = None
-        self._overrange_points: list[int] | None = None
         self.sweeps: list[dict[str, Any]] = []  # what each triggered sweep applied, for tests
-        self.reset()
-        self._register()
+        option = f"{self.freq_range_Hz[1] / 1e6:g}" if m.name == "E4990A" else "0"
+        super().__init__(bench, port=port, idn=idn or m.idn, options=option, cycles=cycles, min_point_s=min_point_s)
 
     # ---- state ------------------------------------------------------------------------------
 
     def reset(self) -> None:
         """``*RST`` state (the E4990A's, within this simulator's ranges)."""
-        self.sweep_type, self.f_start_Hz, self.f_stop_Hz, self.n_points = "LIN", 1.0, 1e5, 201
-        self.segments: list[tuple[float, float, int]] = [(1.0, 1e5, 201)]
+        f_lo = max(self.freq_range_Hz[0], 1.0)  # 1 Hz on SIM-WIDE as before, 20 Hz on the E4990A
+        self.sweep_type, self.f_start_Hz, self.f_stop_Hz, self.n_points = "LIN", f_lo, 1e5, 201
+        self.segments: list[tuple[float, float, int]] = [(f_lo, 1e5, 201)]
         self.ac_V, self.bias_V, self.bias_on = 0.5, 0.0, False
+        self.source_mode, self.bias_mode = "VOLT", "VOLT"
         self.trigger_source, self.continuous, self.armed = "INT", True, False
+        self.averaging, self.avg_count, self.aperture, self.bandwidth = False, 16, 1, 1
+        self.parameters = {1: "Z", 2: "TZ", 3: "R", 4: "X"}
+        self.data_format, self.byte_order = "ASC", "NORM"
+        self.trace_count = 2
         self.busy_until = float("-inf")
         self.data: tuple[np.ndarray, np.ndarray] | None = None
 
@@ -81,140 +97,91 @@ class ImpedanceAnalyzerSim:
         return np.concatenate([np.linspace(a, b, n) for a, b, n in self.segments])
 
     def sweep_time_s(self, freqs_Hz: np.ndarray) -> float:
-        return float(np.sum(np.maximum(self.cycles / np.asarray(freqs_Hz), self.min_point_s)))
+        return self.measuring_time_s(freqs_Hz)
 
-    # ---- faults -----------------------------------------------------------------------------
-
-    def inject(self, fault: str, *, code: int = -200, message: str = "Execution error",
-               points: list[int] | None = None) -> None:
-        """Start a fault: see ``FAULTS``. ``error`` queues ``code,"message"`` once; ``overrange`` flags
-        ``points`` (indices; default all) of the data as overloaded."""
-        if fault not in FAULTS:
-            raise ValueError(f"unknown fault {fault!r}; one of {FAULTS}")
-        if fault == "error":
-            self.server.push_error(code, message)
-            return
-        self.fault = fault
-        if fault == "disconnect":
-            self.server.drop()
-        elif fault == "timeout":
-            self.server.mute_queries = True
-        elif fault == "overrange":
-            self._overrange_points = points
-
-    def clear_fault(self) -> None:
-        """Back to normal; after ``disconnect`` the instrument listens again on the same port."""
-        was, self.fault = self.fault, None
-        self.server.mute_queries = False
-        self._overrange_points = None
-        if was == "disconnect" and not self.server.stopping.is_set():
-            self.server.start()
-
-    def _filter(self, request: Request, reply: str) -> str:
-        if self.fault == "garbage":
-            return GARBAGE
-        if self.fault == "overrange" and "RDAT" in request.header.upper():
-            values = reply.split(",")
-            n = len(values) // 2
-            for i in range(n) if self._overrange_points is None else self._overrange_points:
-                values[2 * i] = values[2 * i + 1] = OVERLOAD
-            return ",".join(values)
-        return reply
-
-    # ---- transport --------------------------------------------------------------------------
-
-    @property
-    def resource_name(self) -> str:
-        return self.server.resource_name
-
-    @property
-    def port(self) -> int:
-        return self.server.port
-
-    def start(self) -> "ImpedanceAnalyzerSim":
-        self.server.start()
-        return self
-
-    def stop(self) -> None:
-        self.server.stop()
-
-    def __enter__(self) -> "ImpedanceAnalyzerSim":
-        return self.start()
-
-    def __exit__(self, *exc: object) -> None:
-        self.stop()
+    def measured_reply(self, request: Request) -> int:
+        return 2 if "RDAT" in request.header.upper() or "FDAT" in request.header.upper() else 0
 
     # ---- commands ---------------------------------------------------------------------------
 
     def _register(self) -> None:
         add = self.server.add
-        add("*IDN?", lambda r: self.idn)
-        add("*RST", lambda r: self.reset())
-        add("*OPC?", self._opc)
+        add("*OPC?", lambda r: (self.wait_idle(), "1")[1])
+        add("*WAI", lambda r: self.wait_idle())
+        add("*TRG", self._bus_trigger)
+        add("SYSTem:PRESet", lambda r: self.reset())
         f_lo, f_hi = self.freq_range_Hz
-        self._setting("SENSe#:SWEep:TYPE", lambda a: _word(a, SWEEP_TYPES), "sweep_type", str)
-        self._setting("SENSe#:FREQuency:STARt", lambda a: parse_number(a, f_lo, f_hi), "f_start_Hz", _num)
-        self._setting("SENSe#:FREQuency:STOP", lambda a: parse_number(a, f_lo, f_hi), "f_stop_Hz", _num)
-        self._setting("SENSe#:SWEep:POINts", lambda a: int(parse_number(a, 2, self.max_points)), "n_points", str)
-        self._setting("SOURce#:VOLTage", lambda a: parse_number(a, *self.ac_range_V), "ac_V", _num)
-        self._setting("SOURce#:BIAS:VOLTage", lambda a: parse_number(a, *self.bias_range_V, 0.0), "bias_V", _num)
-        self._setting("SOURce#:BIAS:STATe", parse_bool, "bias_on", lambda v: str(int(v)))
-        self._setting("TRIGger[:SEQuence]:SOURce", lambda a: _word(a, TRIGGER_SOURCES), "trigger_source", str)
-        self._setting("INITiate#:CONTinuous", parse_bool, "continuous", lambda v: str(int(v)))
-        self._fixed("FORMat[:DATA]", "ASC", {"ASC", "ASCII"})
-        self._fixed("CALCulate#:PARameter#:DEFine", "Z", {"Z"})
+        ch = self._channel
+        self.setting("SENSe#:SWEep:TYPE", lambda a: word(a, SWEEP_TYPES), "sweep_type", str, ch)
+        self.setting("SENSe#:FREQuency:STARt", lambda a: parse_number(a, f_lo, f_hi), "f_start_Hz", num, ch)
+        self.setting("SENSe#:FREQuency:STOP", lambda a: parse_number(a, f_lo, f_hi), "f_stop_Hz", num, ch)
+        self.setting("SENSe#:SWEep:POINts", self._points, "n_points", str, ch)
+        self.setting("SENSe#:AVERage[:STATe]", parse_bool, "averaging", lambda v: str(int(v)), ch)
+        self.setting("SENSe#:AVERage:COUNt", lambda a: int(parse_number(a, 1, 999)), "avg_count", str, ch)
+        self.setting("SENSe#:APERture[:TIME]", lambda a: int(parse_number(a, 1, 5)), "aperture", str, ch)
+        self.setting("SENSe#:BANDwidth[:RESolution]", lambda a: int(parse_number(a, 1, 5)), "bandwidth", str, ch)
+        self.setting("SOURce#:MODE", lambda a: word(a, SOURCE_MODES), "source_mode", str, ch)
+        self.setting("SOURce#:VOLTage[:LEVel][:IMMediate][:AMPLitude]", lambda a: parse_number(a, *self.ac_range_V),
+                     "ac_V", num, ch)
+        self.setting("SOURce#:BIAS:MODE", lambda a: word(a, SOURCE_MODES), "bias_mode", str, ch)
+        self.setting("SOURce#:BIAS:VOLTage[:LEVel][:IMMediate][:AMPLitude]",
+                     lambda a: parse_number(a, *self.bias_range_V, 0.0), "bias_V", num, ch)
+        self.setting("SOURce#:BIAS:STATe", parse_bool, "bias_on", lambda v: str(int(v)), ch)
+        self.setting("TRIGger[:SEQuence]:SOURce", lambda a: word(a, TRIGGER_SOURCES), "trigger_source", str)
+        self.setting("INITiate#:CONTinuous", parse_bool, "continuous", lambda v: str(int(v)), ch)
+        self.setting("CALCulate#:PARameter:COUNt", lambda a: int(parse_number(a, 1, 4)), "trace_count", str, ch)
+        self.setting("FORMat[:DATA]", lambda a: word(a, DATA_FORMATS), "data_format", str)
+        self.setting("FORMat:BORDer", lambda a: word(a, BYTE_ORDERS), "byte_order", str)
+        add("STATus:OPERation:CONDition?", lambda r: "16" if self.busy_until > self.bench.clock.now() else "0")
+        add("TRIGger[:SEQuence][:IMMediate]", self._trigger_now)
+        self._fixed("DISPlay:ENABle", "1", {"ON", "OFF", "1", "0"})
+        add("CALCulate#:PARameter#:DEFine", self._define)
+        add("CALCulate#:PARameter#:DEFine?", lambda r: self.parameters[self._trace(r)])
+        add("CALCulate#:PARameter#:SELect", lambda r: self._trace(r) and None)
+        add("SENSe#:AVERage:CLEar", ch)
         add("SENSe#:SEGMent:DATA", self._set_segments)
         add("SENSe#:SEGMent:DATA?", self._get_segments)
-        add("SENSe#:SWEep:POINts?", self._channel(lambda r: str(self.frequencies().size)))
-        add("SENSe#:FREQuency:DATA?", self._channel(lambda r: ",".join(_num(f) for f in self.frequencies())))
-        add("INITiate#[:IMMediate]", self._channel(self._arm))
+        add("SENSe#:SWEep:POINts?", lambda r: (ch(r), str(self.frequencies().size))[1])
+        add("SENSe#:FREQuency:DATA?", lambda r: (ch(r), self._values(self.frequencies()))[1])
+        add("INITiate#[:IMMediate]", lambda r: (ch(r), setattr(self, "armed", True))[1])
         add("TRIGger[:SEQuence]:SINGle", self._trigger)
-        add("CALCulate#[:SELected]:DATA:RDATa?", self._channel(self._rdat))
+        add("CALCulate#[:SELected]:DATA:RDATa?", lambda r: (ch(r), self._rdat(r))[1])
+        add("CALCulate#[:SELected]:DATA:FDATa?", lambda r: (ch(r), self._fdat(r))[1])
 
     @staticmethod
-    def _channel(fn: Callable[[Request], Any]) -> Callable[[Request], Any]:
-        """Only channel / trace 1 exists."""
+    def _channel(r: Request) -> None:
+        """Only channel 1 exists (trace suffixes are checked by ``_trace``)."""
+        if r.suffixes and r.suffixes[0] != 1:
+            raise ScpiError(-114, "Header suffix out of range")
 
-        def checked(r: Request) -> Any:
-            if any(s != 1 for s in r.suffixes):
-                raise ScpiError(-114, "Header suffix out of range")
-            return fn(r)
+    def _trace(self, r: Request) -> int:
+        self._channel(r)
+        trace = r.suffixes[1] if len(r.suffixes) > 1 else 1
+        if not 1 <= trace <= 4:
+            raise ScpiError(-114, "Header suffix out of range")
+        return trace
 
-        return checked
+    def _define(self, r: Request) -> None:
+        self.parameters[self._trace(r)] = word(one_arg(r), PARAMETERS)
 
-    @staticmethod
-    def _one_arg(r: Request) -> str:
-        if not r.args or not r.args[0]:
-            raise ScpiError(-109, "Missing parameter")
-        if len(r.args) > 1:
-            raise ScpiError(-108, "Parameter not allowed")
-        return r.args[0]
-
-    def _setting(self, header: str, parse: Callable[[str], Any], attr: str, show: Callable[[Any], str]) -> None:
-        """A settable value with its query; a query answers in the form ``show`` gives."""
-
-        def set_(r: Request) -> None:
-            value = parse(self._one_arg(r))
-            if attr == "n_points" and self.sweep_type == "SEGM":
-                raise ScpiError(-221, "Settings conflict")  # segment sweeps take points from the table
-            setattr(self, attr, value)
-
-        self.server.add(header, self._channel(set_))
-        self.server.add(header + "?", self._channel(lambda r: show(getattr(self, attr))))
+    def _points(self, arg: str) -> int:
+        if self.sweep_type == "SEGM":
+            raise ScpiError(-221, "Settings conflict")  # segment sweeps take points from the table
+        return int(parse_number(arg, 2, self.max_points))
 
     def _fixed(self, header: str, answer: str, accepted: set[str]) -> None:
         """A setting this simulator supports in one value only."""
 
         def set_(r: Request) -> None:
-            if self._one_arg(r).upper() not in accepted:
+            if one_arg(r).upper() not in accepted:
                 raise ScpiError(-224, "Illegal parameter value")
 
-        self.server.add(header, self._channel(set_))
-        self.server.add(header + "?", self._channel(lambda r: answer))
+        self.server.add(header, set_)
+        self.server.add(header + "?", lambda r: answer)
 
     def _set_segments(self, r: Request) -> None:
         """``7,<stim mode>,<osc>,<bias>,<meas time>,<avg>,<seg time>,<delay>,<N>,<start>,<stop>,<points>,...``"""
-        self._channel(lambda _: None)(r)
+        self._channel(r)
         try:
             head = [int(float(a)) for a in r.args[:9]]
             body = [float(a) for a in r.args[9:]]
@@ -246,12 +213,9 @@ class ImpedanceAnalyzerSim:
         self.segments = segments
 
     def _get_segments(self, r: Request) -> str:
-        self._channel(lambda _: None)(r)
-        rows = ",".join(f"{_num(a)},{_num(b)},{n}" for a, b, n in self.segments)
+        self._channel(r)
+        rows = ",".join(f"{num(a)},{num(b)},{n}" for a, b, n in self.segments)
         return f"7,0,0,0,0,0,0,0,{len(self.segments)},{rows}"
-
-    def _arm(self, r: Request) -> None:
-        self.armed = True
 
     def _trigger(self, r: Request) -> None:
         """One sweep, if the trigger source is BUS and the channel is waiting for a trigger."""
@@ -269,19 +233,47 @@ class ImpedanceAnalyzerSim:
         self.busy_until = self.bench.clock.now() + self.sweep_time_s(freqs)
         self.sweeps.append({"freqs_Hz": freqs, "ac_V": self.ac_V, "bias_V": bias})
 
-    def _opc(self, r: Request) -> str:
-        """Answer once the sweep in progress is over (simulated time); give up if the server stops."""
-        clock = self.bench.clock
-        chunk = 0.05 * getattr(clock, "time_scale", 1.0)  # ~50 ms of wall time per nap
-        while (left := self.busy_until - clock.now()) > 0 and not self.server.stopping.is_set():
-            clock.sleep(min(left, chunk))
-        return "1"
+    def _values(self, values: np.ndarray) -> str:
+        """Data in the FORMat chosen: ASCII numbers, or an IEEE 488.2 definite-length block of 64-bit
+        (REAL) or 32-bit (REAL32) floats, big-endian (NORMal) or little-endian (SWAPped)."""
+        if self.data_format == "ASC":
+            return ",".join(num(v) for v in values)
+        dtype = (">" if self.byte_order == "NORM" else "<") + ("f8" if self.data_format == "REAL" else "f4")
+        body = np.asarray(values, dtype=dtype).tobytes()
+        size = str(len(body))
+        return f"#{len(size)}{size}" + body.decode("latin-1")
+
+    def _trigger_now(self, r: Request) -> None:
+        """``:TRIG[:SEQ][:IMM]``: a sweep now, whatever the trigger source, if the channel waits for one."""
+        if not (self.continuous or self.armed):
+            raise ScpiError(-211, "Trigger ignored")
+        source, self.trigger_source = self.trigger_source, "BUS"
+        try:
+            self._trigger(r)
+        finally:
+            self.trigger_source = source
+
+    def _bus_trigger(self, r: Request) -> None:
+        """``*TRG``: a sweep when the trigger source is BUS (else -211, as the instrument)."""
+        self._trigger(r)
+
+    def _fdat(self, r: Request) -> str:
+        """Formatted data of the active trace (trace 1): two values per point, the second 0 for scalar formats."""
+        if self.data is None:
+            raise ScpiError(-230, "Data corrupt or stale")
+        f, z = self.data
+        fn = _FORMATTED.get(self.parameters[1])
+        if fn is None:
+            raise ScpiError(-221, "Settings conflict")  # a parameter this simulator does not compute
+        return self._values(np.column_stack([fn(z, f), np.zeros(f.size)]).ravel())
 
     def _rdat(self, r: Request) -> str:
         if self.data is None:
             raise ScpiError(-230, "Data corrupt or stale")
         z = self.data[1]
-        return ",".join(f"{_num(v.real)},{_num(v.imag)}" for v in z)
+        return self._values(np.column_stack([z.real, z.imag]).ravel())
+
+
 
 
 # --------------------------------------------------------------------------------------------------
@@ -364,12 +356,7 @@ def main(argv: list[str] | None = None) -> int:
         for p in record(args.record):
             print(p)
     if args.serve:
-        with ImpedanceAnalyzerSim(DemoBench()) as sim:
-            print(sim.resource_name, flush=True)
-            try:
-                sim.server.stopping.wait()
-            except KeyboardInterrupt:
-                pass
+        ImpedanceAnalyzerSim(DemoBench()).serve_forever()
     if not (args.record or args.serve):
         parser.print_usage()
         return 2

@@ -2,10 +2,15 @@
 
 The head measures ±5 mm around its 30 mm reference distance; the controller reports the
 displacement from the reference in mm with 0.1 µm resolution (``+01.2345``), ``±FFFFFFF`` beyond
-the range. Both outputs show the one head. Commands: ``M0``/``M1``/``M2`` measure, ``V<out>``
-auto-zero on, ``W<out>`` auto-zero off; anything else is ``ER,<cmd>,00``.
+the range. Both outputs show the one head. The command set is the table of ``drivers.keyence_dialect``
+(the LK-G communication chapter): ``M0``/``M1``/``M2`` measure, ``V<out>``/``W<out>`` auto-zero on/off,
+``VR,<out>`` reset, ``KL,<0|1>`` key lock, ``PW,<n>``/``PR`` program, ``Q0``/``R0`` communication/general
+mode, ``SW``/``SR`` setting writes and reads (offset ``OF`` in 0.1 um counts, which the measured value
+subtracts; function ``HB``). Refusals are ``ER,<header>,<code>`` with the manual's codes: 00 unknown
+command, 01 wrong mode (a mode change to the mode already in use is refused too), 21 parameter count,
+22 parameter range.
 
-Faults (``inject``): ``disconnect``, ``timeout``, ``garbage``, ``error`` (``ER,<cmd>,02``),
+Faults (``inject``): ``disconnect``, ``timeout``, ``garbage``, ``error`` (``ER,<cmd>,99``, "other error"),
 ``overrange`` (``+FFFFFFF``), ``invalid`` (``XXXXXXXX``).
 
 Regenerate the recorded traffic the tests replay::
@@ -15,13 +20,16 @@ Regenerate the recorded traffic the tests replay::
 
 from __future__ import annotations
 
-import re
+from typing import Callable
 
+from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
 from mock_devices.bench_api import BenchView
 from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
 
-_MEASURE = re.compile(r"M([0-2])")
-_ZERO = re.compile(r"([VW])([0-2])")
+
+class _Refused(Exception):
+    def __init__(self, code: int):
+        self.code = code
 
 
 class KeyenceSim(SimDevice):
@@ -35,6 +43,14 @@ class KeyenceSim(SimDevice):
         self.range_mm = range_mm
         self.resolution_mm = resolution_mm
         self.zero_mm = {1: 0.0, 2: 0.0}  # auto-zero offsets per output
+        self.mode = GENERAL
+        self.keys_locked, self.program = False, 0
+        self.settings: dict[tuple[str, int], int] = {(sid, out): 0 for sid in LKG_SETTINGS for out in (1, 2)}
+        self._handlers: dict[str, Callable[[str, tuple[str, ...]], str]] = {
+            "M": self._measure, "V": self._zero, "W": self._zero, "VR": self._reset, "KL": self._key_lock,
+            "PW": self._program_write, "PR": lambda h, g: f"PR,{self.program}", "Q0": self._mode,
+            "R0": self._mode, "SW": self._setting_write, "SR": self._setting_read,
+        }
 
     def _raw_mm(self) -> float:
         return self.bench.displacement_now() * 1e3
@@ -46,25 +62,91 @@ class KeyenceSim(SimDevice):
         raw = self._raw_mm()
         if self.fault == "overrange" or abs(raw) > self.range_mm:
             return ("-" if raw < 0 else "+") + "FFFFFFF"
-        counts = round((raw - self.zero_mm[out]) / self.resolution_mm)
+        offset_mm = self.settings[("OF", out)] * 1e-4  # OF is in 0.1 um counts
+        counts = round((raw - self.zero_mm[out] - offset_mm) / self.resolution_mm)
         sign = "-" if counts < 0 else "+"
         return f"{sign}{abs(counts) * self.resolution_mm:07.4f}"
 
     def respond(self, line: bytes) -> bytes:
-        cmd = line.decode("ascii", errors="replace").strip().upper()
+        request = line.decode("ascii", errors="replace").strip().upper()
+        header = header_of(request)[:8]
         if self.fault == "error":
-            return f"ER,{cmd},02\r".encode()
-        if m := _MEASURE.fullmatch(cmd):
-            out = int(m.group(1))
-            fields = [self.value_field(1), self.value_field(2)] if out == 0 else [self.value_field(out)]
-            return f"{cmd},{','.join(fields)}\r".encode()
-        if m := _ZERO.fullmatch(cmd):
-            outs = (1, 2) if m.group(2) == "0" else (int(m.group(2)),)
-            raw = self._raw_mm()
-            for out in outs:
-                self.zero_mm[out] = raw if m.group(1) == "V" else 0.0
-            return f"{cmd}\r".encode()
-        return f"ER,{cmd[:8]},00\r".encode()
+            return f"ER,{header},99\r".encode()
+        found = find(request)
+        if found is None:
+            return f"ER,{header},{self._unknown_code(request)}\r".encode()
+        cmd, m = found
+        if self.mode not in cmd.modes:
+            return f"ER,{header},01\r".encode()
+        try:
+            return (self._handlers[cmd.header](request, m.groups()) + "\r").encode()
+        except _Refused as e:
+            return f"ER,{header},{e.code:02d}\r".encode()
+
+    @staticmethod
+    def _unknown_code(request: str) -> str:
+        """A known header with the wrong parameters is 21 (count) / 22 (range); anything else 00."""
+        head, *params = request.split(",")
+        known = {"VR": 1, "KL": 1, "PW": 1, "SW": 3, "SR": 2}
+        if head in known:
+            return "21" if len(params) != known[head] else "22"
+        if len(head) == 2 and head[0] in "MVW" and head[1].isdigit():
+            return "22"  # M3, V9: output out of range
+        return "00"
+
+    def _measure(self, request: str, groups: tuple[str, ...]) -> str:
+        out = int(groups[0])
+        fields = [self.value_field(1), self.value_field(2)] if out == 0 else [self.value_field(out)]
+        return f"{request},{','.join(fields)}"
+
+    def _zero(self, request: str, groups: tuple[str, ...]) -> str:
+        outs = (1, 2) if groups[0] == "0" else (int(groups[0]),)
+        raw = self._raw_mm()
+        for out in outs:
+            self.zero_mm[out] = raw if request[0] == "V" else 0.0
+        return request
+
+    def _reset(self, request: str, groups: tuple[str, ...]) -> str:
+        return "VR"  # no hold function runs on the simulated controller: nothing held to clear
+
+    def _key_lock(self, request: str, groups: tuple[str, ...]) -> str:
+        self.keys_locked = groups[0] == "1"
+        return "KL"
+
+    def _program_write(self, request: str, groups: tuple[str, ...]) -> str:
+        self.program = int(groups[0])
+        return "PW"
+
+    def _mode(self, request: str, groups: tuple[str, ...]) -> str:
+        self.mode = COMMUNICATION if request == "Q0" else GENERAL
+        return request
+
+    def _setting_args(self, groups: tuple[str, ...], count: int) -> tuple[str, int, list[str]]:
+        sid, rest = groups
+        params = rest.split(",") if rest else []
+        if sid not in LKG_SETTINGS:
+            raise _Refused(0)
+        if len(params) != count:
+            raise _Refused(21)
+        if params[0] not in ("1", "2"):
+            raise _Refused(22)
+        return sid, int(params[0]), params[1:]
+
+    def _setting_write(self, request: str, groups: tuple[str, ...]) -> str:
+        sid, out, (text,) = self._setting_args(groups, 2)
+        spec = LKG_SETTINGS[sid]
+        try:
+            value = int(text)
+        except ValueError:
+            raise _Refused(22) from None
+        if not spec.lo <= value <= spec.hi:
+            raise _Refused(22)
+        self.settings[(sid, out)] = value
+        return f"SW,{sid}"
+
+    def _setting_read(self, request: str, groups: tuple[str, ...]) -> str:
+        sid, out, _ = self._setting_args(groups, 1)
+        return f"SR,{sid},{out},{format_reading(LKG_SETTINGS[sid], self.settings[(sid, out)])}"
 
 
 def record_demo(path: str) -> int:

@@ -1,8 +1,9 @@
 """Simulated load-cell indicator (Dacell UMMA-K10, 98 N): a continuous stream of frames from the clamp.
 
-Frames ``ST,GS,+0000.50Kg\\r\\n`` computed from ``bench.clamp_force_now()``: status ``US`` while the
-force moved by more than ``stable_band_N`` since the previous frame, ``ST`` otherwise, ``OL`` above
-98 N. Rate: ``frames_per_s`` of simulated time, but never more than ``max_wall_fps`` per wall second
+Frames in A&D's stream format (AD-4329 format 1), ``ST,GS,+0000.50kg\\r\\n``, computed from
+``bench.clamp_force_now()``: status ``US`` while the force moved by more than ``stable_band_N`` since the
+previous frame, ``ST`` otherwise; above 98 N the out-of-range frame ``OL,GS,     .  kg`` (the data
+field's digits and sign replaced by spaces, the decimal point kept). Rate: ``frames_per_s`` of simulated time, but never more than ``max_wall_fps`` per wall second
 (a 1000x bench must not flood the line). Commands (no reply, like many indicators): ``Z`` zero
 (within ±10 % of capacity, else ignored), ``T`` tare (switches to net), ``G`` back to gross.
 
@@ -36,13 +37,13 @@ class LoadCellSim(SimDevice):
         *,
         frames_per_s: float = 20.0,
         max_wall_fps: float = 200.0,
-        unit: str = "Kg",
+        unit: str = "kg",
         stable_band_N: float = 0.02,
         seed: int = 0,
     ):
         super().__init__(seed)
-        if unit not in ("Kg", "N"):
-            raise ValueError("unit must be 'Kg' or 'N'")
+        if unit not in ("kg", "N"):
+            raise ValueError("unit must be 'kg' or 'N'")
         self.bench, self.unit, self.stable_band_N = bench, unit, stable_band_N
         scale = float(getattr(bench.clock, "time_scale", 1.0))
         self.stream_interval_s = max(1.0 / (frames_per_s * scale), 1.0 / max_wall_fps)
@@ -60,9 +61,10 @@ class LoadCellSim(SimDevice):
         self._prev_N = force
         status = "OL" if self.fault == "overrange" or force > self.capacity_N else ("ST" if stable else "US")
         shown = force - self.zero_offset_N - (self.tare_N or 0.0)
-        value = shown / G_N if self.unit == "Kg" else shown
-        text = f"{'-' if round(value, 2) < 0 else '+'}{abs(value):07.2f}"
-        line = f"{status},{'GS' if self.tare_N is None else 'NT'},{text}{self.unit}\r\n".encode()
+        value = shown / G_N if self.unit == "kg" else shown
+        text = "     .  " if status == "OL" else f"{'-' if round(value, 2) < 0 else '+'}{abs(value):07.2f}"
+        unit = self.unit if len(self.unit) == 2 else " " + self.unit  # A&D's 2-figure unit field: " N"
+        line = f"{status},{'GS' if self.tare_N is None else 'NT'},{text}{unit}\r\n".encode()
         self._count += 1
         if self.fault == "noise" and self._count % 2 == 0:
             line += self.noise(self._rng.randrange(3, 12))  # corrupts the next frame's line only

@@ -6,11 +6,20 @@ Reusable by any simulated instrument that speaks SCPI. Reached through pyvisa-py
 Headers are registered as patterns in the manual's notation: upper case is the short form, the whole
 word the long form, ``#`` a numeric suffix that defaults to 1, ``[NODE]`` an optional node and a final
 ``?`` a query, e.g. ``"SOURce#:BIAS:VOLTage?"`` or ``"CALCulate#[:SELected]:DATA:RDATa?"``.
-Built in: ``*CLS``, ``SYSTem:ERRor[:NEXT]?``; an unknown header queues ``-113,"Undefined header"``.
+Message rules kept (IEEE 488.2 / SCPI-99 ch. 6-7): units separated by ``;`` keep the path of the unit
+before them (``:SENS1:FREQ:STAR 0.1;STOP 1E4`` sets STOP under ``:SENS1:FREQ``), a leading ``:`` goes
+back to the root, and common commands (``*XXX``) leave the path alone; each new message starts at the root.
+
+Built in: the IEEE 488.2 common commands ``*CLS``, ``*ESE``/``*ESE?``, ``*ESR?``, ``*SRE``/``*SRE?``,
+``*STB?``, ``*OPC``/``*OPC?``, ``*WAI``, ``*OPT?``, ``*TST?`` (an instrument overrides what it does
+differently, e.g. ``*OPC?`` that waits for a sweep, ``*TRG``, ``*RST``) and ``SYSTem:ERRor[:NEXT]?``.
+An unknown header queues ``-113,"Undefined header"``, sets the event status register's command-error
+bit and is logged with the header it names (``ScpiServer.undefined`` keeps the list).
 """
 
 from __future__ import annotations
 
+import logging
 import re
 import socket
 import threading
@@ -19,6 +28,15 @@ from dataclasses import dataclass
 from typing import Callable
 
 LOOPBACK = "127.0.0.1"
+log = logging.getLogger(__name__)
+
+# IEEE 488.2 standard event status register bits
+ESR_OPC, ESR_QYE, ESR_DDE, ESR_EXE, ESR_CME = 1, 4, 8, 16, 32
+
+
+def esr_bit(code: int) -> int:
+    """The event status bit an error code sets: -1xx command, -2xx execution, -3xx device, -4xx query."""
+    return {1: ESR_CME, 2: ESR_EXE, 4: ESR_QYE}.get(-code // 100, ESR_DDE) if code < 0 else ESR_DDE
 
 
 class ScpiError(Exception):
@@ -34,7 +52,7 @@ class Request:
     """One parsed program message unit."""
 
     raw: str
-    header: str  # as received, without arguments
+    header: str  # the full header (compound path resolved), without arguments
     suffixes: tuple[int, ...]  # numeric suffixes of the '#' nodes in the matched pattern, in order
     args: tuple[str, ...]
     query: bool
@@ -59,6 +77,28 @@ def split_args(text: str) -> tuple[str, ...]:
     if cur or out:
         out.append("".join(cur).strip())
     return tuple(out)
+
+
+def split_units(message: str) -> list[str]:
+    """Program message units: split on ``;`` outside double-quoted strings."""
+    out, cur, quoted = [], [], False
+    for ch in message:
+        if ch == '"':
+            quoted = not quoted
+        if ch == ";" and not quoted:
+            out.append("".join(cur))
+            cur = []
+        else:
+            cur.append(ch)
+    out.append("".join(cur))
+    return out
+
+
+def _register_arg(r: "Request") -> int:
+    """The 0..255 argument of *ESE / *SRE (-222 outside, -109 missing)."""
+    if not r.args or not r.args[0]:
+        raise ScpiError(-109, "Missing parameter")
+    return int(parse_number(r.args[0], 0, 255))
 
 
 def parse_number(arg: str, lo: float, hi: float, default: float | None = None) -> float:
@@ -126,7 +166,8 @@ class _Pattern:
 class ScpiServer:
     """Threaded SCPI-over-TCP server bound to loopback; ``port=0`` picks a free port."""
 
-    def __init__(self, port: int = 0, *, host: str = LOOPBACK, name: str = "scpi", queue_size: int = 10):
+    def __init__(self, port: int = 0, *, host: str = LOOPBACK, name: str = "scpi", queue_size: int = 10,
+                 options: str = "0"):
         if host not in (LOOPBACK, "localhost"):
             raise ValueError("the simulated instruments listen on loopback only")
         self.host, self.port, self.name = LOOPBACK, int(port), name
@@ -142,8 +183,41 @@ class ScpiServer:
         self._listener: socket.socket | None = None
         self._conns: set[socket.socket] = set()
         self._threads: list[threading.Thread] = []
+        self.esr = self.ese = self.sre = 0
+        self.options = options
+        self.undefined: list[str] = []  # every header answered with -113, in order (the log names them too)
+        self._register_common()
+
+    def _register_common(self) -> None:
+        """IEEE 488.2 common commands (section 10) with their register semantics."""
         self.add("*CLS", lambda r: self.clear_errors())
         self.add("SYSTem:ERRor[:NEXT]?", lambda r: self.pop_error())
+        self.add("*ESR?", lambda r: str(self._read_esr()))
+        self.add("*ESE", lambda r: setattr(self, "ese", _register_arg(r)))
+        self.add("*ESE?", lambda r: str(self.ese))
+        self.add("*SRE", lambda r: setattr(self, "sre", _register_arg(r)))
+        self.add("*SRE?", lambda r: str(self.sre))
+        self.add("*STB?", lambda r: str(self.status_byte()))
+        self.add("*OPC", lambda r: self._set_esr(ESR_OPC))  # nothing overlapped by default: complete at once
+        self.add("*OPC?", lambda r: "1")
+        self.add("*WAI", lambda r: None)
+        self.add("*OPT?", lambda r: self.options)
+        self.add("*TST?", lambda r: "0")
+
+    def _set_esr(self, bits: int) -> None:
+        with self._err_lock:
+            self.esr |= bits
+
+    def _read_esr(self) -> int:
+        with self._err_lock:
+            value, self.esr = self.esr, 0
+        return value
+
+    def status_byte(self) -> int:
+        """*STB?: bit 2 error queue not empty, bit 5 ESB (ESR & ESE), bit 6 MSS (summary of SRE)."""
+        with self._err_lock:
+            stb = (4 if self._errors else 0) | (32 if self.esr & self.ese else 0)
+        return stb | (64 if stb & self.sre else 0)
 
     # ---- dispatch ---------------------------------------------------------------------------
 
@@ -154,6 +228,7 @@ class ScpiServer:
     def push_error(self, code: int, message: str) -> None:
         """Queue an error; a full queue keeps its head and ends in -350 as SCPI prescribes."""
         with self._err_lock:
+            self.esr |= esr_bit(code)
             if len(self._errors) >= self._queue_size:
                 self._errors.pop()
                 self._errors.append((-350, "Queue overflow"))
@@ -163,6 +238,7 @@ class ScpiServer:
     def clear_errors(self) -> None:
         with self._err_lock:
             self._errors.clear()
+            self.esr = 0
 
     def pop_error(self) -> str:
         with self._err_lock:
@@ -172,12 +248,18 @@ class ScpiServer:
     def handle(self, message: str) -> str | None:
         """Execute one message (units separated by ';'); the reply, or None if nothing to send."""
         replies = []
+        path: list[str] = []  # the compound-header path: a new message starts at the root
         with self._lock:
-            for unit in (u.strip() for u in message.split(";")):
+            for unit in (u.strip() for u in split_units(message)):
                 if not unit:
                     continue
                 header, _, rest = unit.partition(" ")
                 query = header.endswith("?")
+                if not header.startswith("*"):
+                    parts = header.rstrip("?").split(":")
+                    full = parts[1:] if header.startswith(":") else path + parts
+                    path = full[:-1]
+                    header = ":" + ":".join(full) + ("?" if query else "")
                 if query and self.mute_queries:
                     continue
                 reply = self._dispatch(unit, header, rest, query)
@@ -185,12 +267,17 @@ class ScpiServer:
                     replies.append(reply)
         return ";".join(replies) if replies else None
 
+    def _undefined(self, header: str) -> None:
+        self.undefined.append(header)
+        log.warning("%s: undefined header %s (queued -113)", self.name, header)
+        self.push_error(-113, "Undefined header")
+
     def _dispatch(self, unit: str, header: str, rest: str, query: bool) -> str | None:
         nodes = []
         for part in header.rstrip("?").lstrip(":").split(":"):
             m = _NODE.match(part)
             if m is None:
-                self.push_error(-113, "Undefined header")
+                self._undefined(header)
                 return None
             nodes.append((m.group(1).upper(), m.group(2)))
         for pattern, handler in self._handlers:
@@ -208,7 +295,7 @@ class ScpiServer:
             if reply is None:
                 return None
             return str(reply) if self.reply_filter is None else self.reply_filter(request, str(reply))
-        self.push_error(-113, "Undefined header")
+        self._undefined(header)
         return None
 
     # ---- transport --------------------------------------------------------------------------
@@ -305,7 +392,7 @@ class ScpiServer:
                         continue
                     reply = self.handle(text)
                     if reply is not None and conn in self._conns:
-                        conn.sendall(reply.encode("ascii") + b"\n")
+                        conn.sendall(reply.encode("latin-1") + b"\n")  # latin-1: binary blocks pass byte for byte
         except OSError:
             pass  # the client went away or drop() closed the socket
         finally:

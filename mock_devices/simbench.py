@@ -7,6 +7,8 @@ from typing import Any
 
 from mock_devices.clamp_sim import ClampSim
 from mock_devices.daq_grpc import SimDaq
+from drivers import analyser_models
+from mock_devices.im3590_sim import Im3590Sim
 from mock_devices.impedance_sim import ImpedanceAnalyzerSim
 from mock_devices.keyence_sim import KeyenceSim
 from mock_devices.loadcell_sim import LoadCellSim
@@ -21,13 +23,15 @@ DISPLACEMENT_M_PER_V = 2e-3
 class SimulatedInstruments:
     """Start/stop the simulated laser, load cell, clamp motor, impedance analyser and DAQ on 127.0.0.1."""
 
-    def __init__(self, bench: Bench, serial_transport: str = "tcp", seed: int = 0):
+    def __init__(self, bench: Bench, serial_transport: str = "tcp", seed: int = 0,
+                 impedance_model: str = analyser_models.DEFAULT_MODEL):
         self.bench = bench
         self.transport = serial_transport
         self.keyence = KeyenceSim(bench, range_mm=20.0, seed=seed)
         self.loadcell = LoadCellSim(bench, seed=seed + 1)
         self.clamp = ClampSim(bench, seed=seed + 2)
-        self.impedance = ImpedanceAnalyzerSim(bench)
+        self.impedance_model = analyser_models.get(impedance_model).name
+        self.impedance = Im3590Sim(bench) if impedance_model == "IM3590" else ImpedanceAnalyzerSim(bench, model=impedance_model)
         self.daq = SimDaq(bench, current_gain_A_per_V=CURRENT_GAIN_A_PER_V, displacement_m_per_V=DISPLACEMENT_M_PER_V, seed=seed + 3)
         self._servers: list[Any] = []
 
@@ -58,7 +62,7 @@ class SimulatedInstruments:
             "keyence": {"address": keyence, "dialect": "LK-G"},
             "loadcell": {"address": loadcell},
             "clamp": {"mode": "motor", "address": clamp},
-            "impedance": {"address": self.impedance.resource_name},
+            "impedance": {"address": self.impedance.resource_name, "model": self.impedance_model},
             "daq": {
                 "address": self.daq.address,
                 "device": self.daq.device.name,

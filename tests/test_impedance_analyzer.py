@@ -306,7 +306,7 @@ def test_scpi_server_headers_and_error_queue() -> None:
     server.add("CALCulate#[:SELected]:DATA:RDATa?", lambda r: "ok")
     assert server.handle(":SOURCE2:VOLTAGE?") == "(2,)"
     assert server.handle("sour:volt?") == "(1,)"
-    assert server.handle(":CALC1:SEL:DATA:RDAT?;CALC:DATA:RDATA?") == "ok;ok"
+    assert server.handle(":CALC1:SEL:DATA:RDAT?;:CALC:DATA:RDATA?") == "ok;ok"
     assert server.handle(":SOUR:VOLTS?") is None
     for _ in range(5):
         server.handle("NOPE")
@@ -352,3 +352,74 @@ def test_recording_wrapper_forwards_timeout(sim: ImpedanceAnalyzerSim, rm: pyvis
     rec.timeout = 1234
     assert res.timeout == 1234
     res.close()
+
+
+# ---- the E4990A as published clients drive it (model "E4990A": its real 20 Hz floor) -----------------
+
+
+@pytest.fixture
+def e4990a(bench: RCBench):
+    with ImpedanceAnalyzerSim(bench, model="E4990A") as s:
+        yield s
+
+
+def test_magdynlab_e4990a_client_sequence(e4990a: ImpedanceAnalyzerSim, bench: RCBench, rm: pyvisa.ResourceManager) -> None:
+    """The command sequence of magdynlab's KEYSIGHT_E4990A class (D. González Chávez, CBPF) over TCP VISA
+    through pyvisa-py: binary REAL data, source and bias modes, a bus-triggered sweep polled on
+    STAT:OPER:COND? bit 4, raw data of trace 1. Written anew as facts."""
+    from _exchanges import Exchanges, visa_asker
+
+    res = rm.open_resource(e4990a.resource_name, read_termination="\n", write_termination="\n", timeout=3000)
+    f = np.linspace(20.0, 1e4, 5)  # the *RST sweep type is linear
+    try:
+        Exchanges([
+            ("*CLS", None), ("FORMat:DATA REAL", None), ("FORMat:BORDer NORM", None), ("INIT1:CONT ON", None),
+            ("SENS1:FREQ:STAR 2.00000000000E+01", None), ("SENS1:FREQ:STOP 1.00000000000E+04", None),
+            ("SENS1:SWE:POIN 5", None), ("SENS1:FREQ:DATA?", f),
+            ("SOUR1:MODE VOLT", None), ("SOUR1:MODE?", "VOLT"), ("SOUR1:VOLT 1.000E-02", None),
+            ("SOUR1:BIAS:MODE VOLT", None), ("SOUR1:BIAS:VOLT 0.000E+00", None), ("CALC1:PAR:COUN?", "2"),
+            ("TRIG:SOUR BUS", None), ("SENS1:AVER:STAT?", "0"), ("STAT:OPER:COND?", "0"), ("TRIG:IMM", None),
+            ("SYST:ERR?", '+0,"No error"'), ("*OPC?", "1"), ("STAT:OPER:COND?", "0"), ("CALC1:PAR1:SEL", None),
+            ("CALC1:DATA:RDAT?", np.column_stack([bench.z(f).real, bench.z(f).imag]).ravel()),
+        ]).check(visa_asker(res))
+    finally:
+        res.close()
+    assert e4990a.server.undefined == []
+
+
+def test_e4990a_scpi_rules_and_common_commands(e4990a: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager, caplog) -> None:
+    """What the issue found refused: optional nodes of long forms, BIAS:MODE, *TRG, PAR DEF, compound headers that
+    keep their path, *OPT?; and a query it does not implement leaves -113 and is named in the log."""
+    from _exchanges import Exchanges, visa_asker
+
+    res = rm.open_resource(e4990a.resource_name, read_termination="\n", write_termination="\n", timeout=2000)
+    try:
+        Exchanges([
+            ("*OPT?", "120"), ("*ESE 60", None), ("*ESE?", "60"), ("*SRE 32", None), ("*SRE?", "32"),
+            (":SOURce1:VOLTage:LEVel:IMMediate:AMPLitude 0.02", None), (":SOUR1:VOLT?", "+2.000000000000E-02"),
+            (":SOUR1:BIAS:MODE CURR", None), (":SOUR1:BIAS:MODE?", "CURR"),
+            (":CALC1:PAR2:DEF R", None), (":CALC1:PAR2:DEF?", "R"),
+            (":SENS1:FREQ:STAR 100;STOP 10000", None), (":SENS1:FREQ:STAR?;STOP?", "+1.000000000000E+02;+1.000000000000E+04"),
+            (":SENS1:AVER ON;AVER:COUN 4;:SENS1:APER 3;BAND 2", None),
+            (":SENS1:AVER?;AVER:COUN?;:SENS1:APER?;BAND?", "1;4;3;2"),
+            (":TRIG:SOUR BUS;:INIT1", None), ("*TRG", None), ("*WAI", None), ("*ESR?", "0"),
+            (":SENS1:FREQ:STAR 1", None),  # below the 20 Hz floor: -222, execution error
+            ("*ESR?", "16"), ("SYST:ERR?", '-222,"Data out of range"'),
+            (":SENS1:CORR:COLL:METH?", None),  # not simulated: no reply, -113 queued
+        ]).check(lambda req, exp: None if req.endswith("METH?") and res.write(req) else visa_asker(res)(req, exp))
+        assert res.query("SYST:ERR?").strip() == '-113,"Undefined header"'
+        assert res.query("*STB?").strip() == "96"  # ESB (32): the command error is enabled by *ESE 60; MSS (64): *SRE 32
+    finally:
+        res.close()
+    assert e4990a.server.undefined == [":SENS1:CORR:COLL:METH?"]
+    assert ":SENS1:CORR:COLL:METH?" in caplog.text
+
+
+def test_e4990a_keeps_its_20_hz_floor(e4990a: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager) -> None:
+    an = ImpedanceAnalyzer(e4990a.resource_name, resource_manager=rm, timeout_s=2.0, model="E4990A")
+    try:
+        with pytest.raises(InstrumentErrorReply, match="-222"):
+            an.configure_list([0.1, 1.0, 100.0], ac_V=0.01)
+        assert an.identify().split(",")[1] == "E4990A"
+    finally:
+        an.close()

@@ -41,7 +41,7 @@ class Bench:
 def rig(request):
     bench = Bench()
     sim = KeyenceSim(bench)
-    with serve(sim, request.param) as server, Keyence(server.address, timeout_s=0.2) as k:
+    with serve(sim, request.param) as server, Keyence(server.address, timeout_s=0.5) as k:
         yield bench, sim, k, server
 
 
@@ -104,7 +104,7 @@ def test_each_fault_gives_its_exception(rig, fault, exc):
     assert time.monotonic() - t0 < 1.0  # the timeout is the driver's, not a hang
     assert info.value.device == "keyence"
     if fault == "error":
-        assert info.value.code == 2
+        assert info.value.code == 99
     sim.clear_fault()
     if fault != "disconnect":
         assert k.read_displacement(1) == pytest.approx(1e-3, abs=1e-12)  # recovers
@@ -118,7 +118,7 @@ def test_disconnect_then_reconnect(rig):
         with pytest.raises(errors.Disconnected):
             k.read_displacement(1)
     sim.clear_fault()
-    with Keyence(server.address, timeout_s=0.2) as k2:  # a pty comes back under a new path
+    with Keyence(server.address, timeout_s=0.5) as k2:  # a pty comes back under a new path
         assert k2.read_displacement(1) == pytest.approx(2e-3, abs=1e-12)
 
 
@@ -244,3 +244,68 @@ def test_stored_recording_is_what_labrig_produces_today(tmp_path):
     fresh = [(e.device, e.op, e.payload) for e in Transcript.load(out)]
     stored = [(e.device, e.op, e.payload) for e in Transcript.load(TRANSCRIPT)]
     assert fresh == stored, "regenerate with: python -m mock_devices.keyence_sim --record " + str(TRANSCRIPT)
+
+
+# -- a published third-party client, and the manual's command set -----------------------------------
+
+
+# The EPICS LK-G IOC (ISIS Computing Group's keylkg IOC and its lewis emulator): communication mode, offset
+# and function of OUT1 written and read back, general mode, values, reset; error 01 in the wrong mode and
+# for a mode change to the mode in use. Written anew as facts, sent the way the IOC sends them (CR, raw).
+def test_epics_lkg_client_sequence_over_a_pty():
+    from _exchanges import Exchanges, serial_asker
+
+    bench = Bench(1.2345e-3)
+    sim = KeyenceSim(bench)
+    with serve(sim, "pty") as server:
+        ask, port = serial_asker(server.address)
+        try:
+            Exchanges([
+                ("Q0", "Q0"),
+                ("Q0", "ER,Q0,01"),  # already in communication mode
+                ("M1", "ER,M1,01"),  # no measuring in communication mode
+                ("SW,OF,1,+0001000", "SW,OF"),  # offset 0.1 mm, written in 0.1 um counts
+                ("SR,OF,1", "SR,OF,1,+00.1000"),  # read back in mm
+                ("SW,HB,1,2", "SW,HB"),
+                ("SR,HB,1", "SR,HB,1,2"),
+                ("VR,1", "ER,VR,01"),  # reset is a general-mode command
+                ("R0", "R0"),
+                ("SR,OF,1", "ER,SR,01"),  # settings only in communication mode
+                ("M1", "M1,+01.1345"),  # 1.2345 mm less the 0.1 mm offset
+                ("M0", "M0,+01.1345,+01.2345"),
+                ("VR,0", "VR"),
+            ]).check(ask)
+        finally:
+            port.close()
+
+
+def test_manual_commands_through_the_driver(rig):
+    bench, sim, k, _ = rig
+    bench.displacement_m = 2e-3
+    k.lock_keys(True)
+    assert sim.keys_locked
+    k.set_program(3)
+    assert k.program() == 3
+    k.communication_mode()
+    with pytest.raises(errors.InstrumentErrorReply) as info:
+        k.read_displacement(1)
+    assert info.value.code == 1 and "status error" in str(info.value)
+    k.write_setting("OF", 2, -5000)  # -0.5 mm
+    assert k.read_setting("OF", 2) == pytest.approx(-0.5)
+    k.general_mode()
+    assert k.read_displacement(2) == pytest.approx(2.5e-3, abs=1e-12)
+    k.reset(0)
+
+
+@pytest.mark.parametrize("request_,reply", [
+    (b"ZZ", b"ER,ZZ,00\r"),  # unknown command
+    (b"VR,1,2", b"ER,VR,21\r"),  # parameter count
+    (b"PW,9", b"ER,PW,22\r"),  # program out of range
+    (b"M3", b"ER,M3,22\r"),
+])
+def test_error_reply_has_three_fields_and_the_manuals_code(request_, reply):
+    sim = KeyenceSim(Bench())
+    assert sim.respond(request_) == reply
+    assert sim.respond(b"Q0") == b"Q0\r"
+    assert sim.respond(b"SW,OF,1,+9999999") == b"ER,SW,22\r"
+    assert sim.respond(b"SW,OF,1") == b"ER,SW,21\r"

@@ -13,7 +13,7 @@ from drivers.loadcell import LoadCell, parse_frame
 from drivers.transcript import Exchange, ReplaySerial, Transcript
 from labrig.clock import ScaledClock
 from mock_devices.loadcell_sim import LoadCellSim
-from mock_devices.serial_server import serve
+from mock_devices.serial_server import FixedBench, serve
 
 TRANSCRIPT = Path(__file__).parent / "data" / "transcripts" / "loadcell_basic.jsonl"
 G_N = 9.80665  # standard gravity, N per kgf (independent of the driver's constant)
@@ -183,7 +183,8 @@ def test_parse_frame(line, status, kind, force):
 
 
 @pytest.mark.parametrize("line", [b"ST,GS,+0012.34Kg", b"XX,GS,+0012.34Kg\r\n", b"ST,GS,+12.34Kg\r\n",
-                                  b"\x90ST,GS,+0012.34Kg\r\n", b"ST,GS,+00.2.34Kg\r\n", b"ST,GS,+0012.34lb\r\n"])
+                                  b"\x90ST,GS,+0012.34Kg\r\n", b"ST,GS,+00.2.34Kg\r\n", b"ST,GS,+0012.34oz\r\n",
+                                  b"ST,GS,+00 2.34kg\r\n", b"ST,GS,     .  kg\r\n"])
 def test_parse_frame_rejects(line):
     assert parse_frame(line) is None
 
@@ -223,7 +224,7 @@ def test_recording_captures_the_stream_and_commands(rig):
         lc.tare()
     data = b"".join(e.payload for e in tr if e.op == "read")
     assert [e.payload for e in tr if e.op == "write"] == [b"T\r\n"]
-    assert b"ST,GS,+0000.50Kg\r\n" in data and b"ST,NT,+0000.00Kg\r\n" in data
+    assert b"ST,GS,+0000.50kg\r\n" in data and b"ST,NT,+0000.00kg\r\n" in data
 
 
 def test_replay_of_recorded_session():
@@ -240,3 +241,102 @@ def test_replay_names_an_unrecorded_command():
     lc = LoadCell(ReplaySerial(Transcript.load(TRANSCRIPT).for_device("loadcell")), background=False)
     with pytest.raises(errors.ReplayMismatch, match=r"T\\r\\n"):
         lc.tare()  # the recording zeroes first
+
+
+# -- the frames of real indicators (facts from each manual's data-format section, written anew) ------
+
+LB_N = 0.45359237 * G_N
+
+
+@pytest.mark.parametrize("line, status, kind, force", [
+    # A&D AD-4329 "format 1" / AD-4404 "A&D data format": 8-figure data with polarity, 2- or 3-figure unit
+    (b"ST,GS,+0012.34kg\r\n", "ST", "GS", 12.34 * G_N),
+    (b"US,NT,-0000.05kg\r\n", "US", "NT", -0.05 * G_N),
+    (b"ST,G ,+0001.50 kg\r\n", "ST", "GS", 1.5 * G_N),  # "G " header, 3-figure unit
+    (b"ST,N ,+0123.40 g\r\n", "ST", "NT", 0.1234 * G_N),  # " g"
+    (b"ST,GS,+00.0125 t\r\n", "ST", "GS", 12.5 * G_N),  # " t"
+    (b"ST,GS,+0010.00lb\r\n", "ST", "GS", 10 * LB_N),
+    (b"ST,GS,+0009.81 N\r\n", "ST", "GS", 9.81),
+    # Tiger TI-02-P auto weight string: a space for the plus sign, a comma before the unit
+    (b"ST,GS, 0012.34,kg\r\n", "ST", "GS", 12.34 * G_N),
+    (b"US,NT,-0000.25,lb\r\n", "US", "NT", -0.25 * LB_N),
+    (b"ST,GS,   12.34, g\r\n", "ST", "GS", 0.01234 * G_N),
+    # CAS 22-byte format: device ID and lamp byte, 8-byte data without sign, a blank before the unit
+    (b"ST,GS,1\xc4,000013.5 kg\r\n", "ST", "GS", 13.5 * G_N),
+    (b"US,NT,1\x86,-00013.5 kg\r\n", "US", "NT", -13.5 * G_N),
+    # CAS "18 bytes for AND" (also Dacell's A&D-compatible stream)
+    (b"ST,GS,000013.5kg\r\n", "ST", "GS", 13.5 * G_N),
+])
+def test_frames_of_real_indicators(line, status, kind, force):
+    f = parse_frame(line)
+    assert f is not None and (f.status, f.kind) == (status, kind)
+    assert f.force_N == pytest.approx(force, rel=1e-9)
+
+
+@pytest.mark.parametrize("line", [b"ST,TR,+0001.00kg\r\n", b"ST,T ,+0001.00kg\r\n", b"ST,PT,+0001.00kg\r\n"])
+def test_tare_frames_are_not_the_load(line):
+    f = parse_frame(line)
+    assert f is not None and f.kind in ("TR", "PT")
+    lc = _stream(b"ST,GS,+0002.00kg\r\n" + line)
+    assert lc.force().force_N == pytest.approx(2.0 * G_N)  # the gross frame, not the tare after it
+
+
+def test_ad_out_of_range_frame_is_an_overload_not_a_stale_stream():
+    lc = _stream(b"ST,GS,+0009.00kg\r\nOL,GS,     .  kg\r\n")
+    with pytest.raises(errors.Overload, match="overload"):
+        lc.force()
+
+
+def test_simulator_speaks_ad_format_with_lower_case_kg():
+    sim = LoadCellSim(FixedBench(force_N=0.5 * G_N))
+    assert sim.frame() == b"US,GS,+0000.50kg\r\n"
+    assert sim.frame() == b"ST,GS,+0000.50kg\r\n"
+    sim.inject("overrange")
+    assert sim.frame() == b"OL,GS,     .  kg\r\n"
+    assert LoadCellSim(FixedBench(force_N=9.81), unit="N").frame() == b"US,GS,+0009.81 N\r\n"
+
+
+def test_an_overload_during_a_run_drives_to_zero_and_exits_3():
+    from labrig.events import StepStart
+    from labrig.runner import Runner
+    from labrig.simulate import simulated_rig
+    from protocols import registry
+
+    with simulated_rig() as (rig, sims):
+        runner = Runner(rig, registry.load("step"), [])
+        steps = runner.plan()
+        runner.subscribers.append(lambda ev: isinstance(ev, StepStart) and steps[ev.index].kind == "step"
+                                  and sims.loadcell.inject("overrange"))
+        res = runner.run()
+        assert sims.daq.ao_output_V() == 0.0
+    assert res.exit_code == 3 and "loadcell" in res.reason and "overload" in res.reason.lower()
+
+
+@pytest.mark.parametrize("transport", ["pty", "tcp"])
+def test_project_sperm_scales_client_reads_the_simulator(transport):
+    """woxuankai/project_sperm's scales module (an A&D-format reader): open the port, flush input, read a line to
+    drop a partial one, read the next, weight = float(line[6:14] without spaces). Written anew as facts; the
+    18-byte A&D frame ("18 bytes for AND" in the CAS manuals) is what it slices."""
+    import serial
+
+    bench = Bench(1.2345 * G_N)
+    with serve(LoadCellSim(bench), transport) as server:
+        port = serial.serial_for_url(server.address, timeout=1.0)
+        try:
+            port.reset_input_buffer()
+            port.readline()
+            line = port.readline()
+        finally:
+            port.close()
+    assert len(line) == 18 and line.endswith(b"\r\n") and line[:6] in (b"ST,GS,", b"US,GS,")
+    assert float(line[6:14].decode().replace(" ", "")) == pytest.approx(1.23, abs=0.005)
+    assert line[14:16] == b"kg"
+
+
+def test_cr_only_terminator_and_a_cr_lf_split_across_reads():
+    """A&D lets a frame end in CR alone; a CR LF may arrive in two reads (the LF must not become a blank line)."""
+    lc = _stream(b"ST,GS,+0001.00kg\rST,GS,+0002.00kg\r")
+    assert lc.force().force_N == pytest.approx(2.0 * G_N) and lc.bytes_skipped == 0
+    lc._feed(b"ST,GS,+0003.00kg\r")
+    lc._feed(b"\nST,GS,+0004.00kg\r\n")
+    assert [round(f.force_N / G_N, 2) for f in lc._frames_after(0)][-2:] == [3.0, 4.0] and lc.bytes_skipped == 0

@@ -25,6 +25,7 @@ _COMMANDS = {
     "report": "labrig.cli.report_cmd:report_cmd",
     "replay": "labrig.cli.live_cmds:replay_cmd",
     "model": "labrig.cli.model:model",
+    "check": "labrig.cli.check_cmd:check_cmd",
 }
 
 

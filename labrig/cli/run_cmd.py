@@ -129,7 +129,9 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
 @click.option("--seed", default=0, show_default=True, type=int)
 @click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=float)
 @click.option("--transport", type=click.Choice(["tcp", "pty"]), default="tcp", show_default=True, help="serial instruments on socket:// or a pty")
-def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport) -> None:
+@click.option("--impedance", "impedance_model", type=click.Choice(["IM3590", "E4990A", "SIM-WIDE"], case_sensitive=False),
+              default="IM3590", show_default=True, help="the impedance analyser served (E4990A: 20 Hz floor)")
+def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport, impedance_model) -> None:
     """Serve the simulated instruments on 127.0.0.1 until SIGINT/SIGTERM; write the rig file pointing at them."""
     from labrig.clock import ScaledClock
     from labrig.simulate import rig_file_data
@@ -144,7 +146,7 @@ def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport) -> None:
     signal.signal(signal.SIGINT, handler)
     signal.signal(signal.SIGTERM, handler)
     with ExitStack() as stack:
-        sims = stack.enter_context(SimulatedInstruments(bench, serial_transport=transport, seed=seed))
+        sims = stack.enter_context(SimulatedInstruments(bench, serial_transport=transport, seed=seed, impedance_model=impedance_model.upper()))
         data = rig_file_data(sims, clock, preset)
         try:
             # written whole then renamed: a client polling for the file never reads half of it
