@@ -10,6 +10,7 @@ smallest printed value so it stays physical.
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
+from functools import lru_cache
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
@@ -23,24 +24,37 @@ class ClampLaw:
     clamp_rows: tuple[ClampElectrical, ...]
     Kt_bar: tuple[float, ...]
 
-    def _curve(self, values: np.ndarray, p_Pa: float) -> float:
-        lp = np.log(np.asarray(self.pressures_Pa))
-        f = PchipInterpolator(lp, values, extrapolate=False)
-        x = np.log(p_Pa)
-        if lp[0] <= x <= lp[-1]:
-            return float(f(x))
-        end = 0 if x < lp[0] else -1
-        y = values[end] + f.derivative()(lp[end]) * (x - lp[end])
-        return float(max(y, 0.25 * np.min(values)))
+    def _curve(self, values: tuple[float, ...], p_Pa: float) -> float:
+        return _curve(self.pressures_Pa, values, p_Pa)
 
     def clamp_at(self, p_Pa: float) -> ClampElectrical:
         if not p_Pa > 0:
             raise ValueError("clamping pressure must be positive")
-        cols = {f.name: np.array([getattr(r, f.name) for r in self.clamp_rows]) for f in fields(ClampElectrical)}
+        cols = {f.name: tuple(getattr(r, f.name) for r in self.clamp_rows) for f in fields(ClampElectrical)}
         return ClampElectrical(**{k: self._curve(v, p_Pa) for k, v in cols.items()})
 
     def kt_bar_at(self, p_Pa: float) -> float:
-        return self._curve(np.array(self.Kt_bar), p_Pa)
+        return self._curve(tuple(self.Kt_bar), p_Pa)
+
+
+@lru_cache(maxsize=64)
+def _interpolator(pressures_Pa: tuple[float, ...], values: tuple[float, ...]) -> tuple[PchipInterpolator, PchipInterpolator]:
+    """The PCHIP curve in log(pressure) and its derivative, built once per table column (the simulated analyser
+    asks for the clamp state at every spectrum point; rebuilding seven curves each time cost ~10 ms a call)."""
+    f = PchipInterpolator(np.log(np.asarray(pressures_Pa)), np.asarray(values), extrapolate=False)
+    return f, f.derivative()
+
+
+@lru_cache(maxsize=4096)
+def _curve(pressures_Pa: tuple[float, ...], values: tuple[float, ...], p_Pa: float) -> float:
+    lp = np.log(np.asarray(pressures_Pa))
+    f, df = _interpolator(pressures_Pa, values)
+    x = np.log(p_Pa)
+    if lp[0] <= x <= lp[-1]:
+        return float(f(x))
+    end = 0 if x < lp[0] else -1
+    y = values[end] + df(lp[end]) * (x - lp[end])
+    return float(max(y, 0.25 * min(values)))
 
 
 def paper_clamp_law() -> ClampLaw:
