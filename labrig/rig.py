@@ -10,7 +10,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [instruments.clamp]     mode = "motor" (address) or "operator"
     [instruments.impedance] address (VISA resource name)
     [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
-                            channels, current_gain_A_per_V, displacement_m_per_V
+                            channels, current_gain_A_per_V, displacement_m_per_V, watchdog_s (rig seconds
+                            without a reset from the host before the DAQ puts 0 V on the drive by itself)
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
+from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
 from drivers.impedance_analyzer import ImpedanceAnalyzer
 from drivers.keyence import open_keyence
@@ -82,6 +84,7 @@ class DaqCfg(_Strict):
     displacement_channel: str = "ai2"
     current_gain_A_per_V: float = Field(1e-3, gt=0)
     displacement_m_per_V: float = Field(1e-3, gt=0)
+    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False)
 
 
 class Instruments(_Strict):
@@ -200,6 +203,8 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             current_gain_A_per_V=d.current_gain_A_per_V,
             displacement_m_per_V=d.displacement_m_per_V,
             transcript=tr,
+            watchdog_s=d.watchdog_s,
+            time_scale=clock.time_scale,
         )
         opened.append(daq)
         analyzer = ImpedanceAnalyzer(ins.impedance.address, transcript=tr, sweep_timeout_s=600.0)
