@@ -34,8 +34,9 @@ from mock_devices.daq_sim import CONTINUOUS, RISING, SimDevice
 DRIVER_VERSION = (25, 5, 0)  # NI-DAQmx version the server claims (>= 24.5: reads use DefaultNumberOfSamplesToRead)
 GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
 FAULTS = ("disconnect", "timeout", "overflow", "error")
-# the one-shot "error" skips these: nidaqmx swallows failures of the version query and of error lookups
-NO_FAULT_PREFIXES = ("GetErrorString", "GetExtendedErrorInfo", "GetSystemInfoAttribute")
+# the one-shot "error" skips these: nidaqmx swallows failures of the version query and of error lookups, and
+# the watchdog resets come from a host's background thread (they would take the error meant for the next call)
+NO_FAULT_PREFIXES = ("GetErrorString", "GetExtendedErrorInfo", "GetSystemInfoAttribute", "ControlWatchdogTask")
 AI_VOLTAGE, CHAN_AI, CHAN_AO, DO_NOT_OVERWRITE = 10322, 10100, 10102, 10159
 SAMPLE_CLOCK, ON_DEMAND, DIGITAL_EDGE, TRIG_NONE = 10388, 10390, 10150, 10230
 ACQUIRED_INTO_BUFFER = 1  # nidaqmx.constants.EveryNSamplesEventType
@@ -369,7 +370,7 @@ def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
     def call(req: Any, ctx: grpc.ServicerContext) -> Any:
         try:
             if not fn.__name__.startswith(NO_FAULT_PREFIXES):
-                dev.check_call_fault()
+                dev.check_call_fault()  # takes the device's lock: a watchdog reset must not wait for it
             return fn(req, ctx)
         except DaqmxError as e:
             md = [("ni-error", str(e.code))]

@@ -50,16 +50,18 @@ class Watchdog:
 class WatchdogUnit:
     """All watchdog tasks of one device and the thread that fires them.
 
-    ``on_expire(wd, t)`` is the device's reaction (outputs to their expiration states at simulated time ``t``);
-    ``on_clear(wd)`` unlocks them. Both run under ``lock`` (the device's lock).
+    The timers have their own lock, so a reset is never held up by the device computing a long record (real
+    hardware is not slowed down by a simulation); only the reaction to an expiry takes the device's lock:
+    ``on_expire(wd, t)`` (outputs to their expiration states at simulated time ``t``) and ``on_clear(wd)``.
+    The device's lock may be held when calling in; the timers' lock is never held while taking the device's.
     """
 
     def __init__(self, clock, lock: threading.RLock, on_expire: Callable[[Watchdog, float], None],
                  on_clear: Callable[[Watchdog], None]):
-        self.clock, self._lock = clock, lock
+        self.clock, self._dev_lock = clock, lock
         self._on_expire, self._on_clear = on_expire, on_clear
         self.tasks: dict[str, Watchdog] = {}
-        self._wake = threading.Condition(lock)
+        self._wake = threading.Condition(threading.Lock())
         self._thread: threading.Thread | None = None
         self._halt = False
 
@@ -67,81 +69,81 @@ class WatchdogUnit:
     def create(self, name: str, timeout_s: float) -> Watchdog:
         if not (timeout_s > 0 or timeout_s == -1) or not math.isfinite(timeout_s):
             raise DaqmxError(ERR["WATCHDOG_TIMEOUT_OUT_OF_RANGE_AND_NOT_SPECIAL_VAL"])
-        with self._lock:
+        with self._wake:
             wd = self.tasks[name] = Watchdog(name, float(timeout_s))
             return wd
 
     def remove(self, name: str) -> None:
         """Clear Task: the timer stops and its channels are unlocked (they keep the expiration value)."""
-        with self._lock:
+        with self._wake:
             wd = self.tasks.pop(name, None)
-            if wd is not None and wd.expired:
-                self._on_clear(wd)
             self._wake.notify_all()
+        if wd is not None and wd.expired:
+            with self._dev_lock:
+                self._on_clear(wd)
 
     def start(self, wd: Watchdog) -> None:
-        with self._lock:
+        with self._wake:
             wd.running = True
             wd.deadline = math.inf if wd.timeout_s < 0 else self.clock.now() + wd.timeout_s
-            self._ensure_thread()
+            if self._thread is None or not self._thread.is_alive():
+                self._halt = False
+                self._thread = threading.Thread(target=self._run, name="simdaq-watchdog", daemon=True)
+                self._thread.start()
             self._wake.notify_all()
 
     def stop(self, wd: Watchdog) -> None:
         """Stop Task: the timer no longer counts; an expiry already reached stays until cleared."""
-        with self._lock:
-            self.poll()
+        self.poll()
+        with self._wake:
             wd.running, wd.deadline = False, math.inf
             self._wake.notify_all()
 
     def control(self, wd: Watchdog, action: int) -> None:
-        with self._lock:
-            self.poll()
-            if action == RESET_TIMER:
-                if wd.expired:
-                    raise DaqmxError(ERR["CANT_RESET_EXPIRED_WATCHDOG"])
-                if wd.running and wd.timeout_s > 0:
-                    wd.deadline = self.clock.now() + wd.timeout_s
-            elif action == CLEAR_EXPIRATION:
-                if wd.expired:
-                    wd.expired_at = None
-                    self._on_clear(wd)
-                if wd.running and wd.timeout_s > 0:
-                    wd.deadline = self.clock.now() + wd.timeout_s
-            else:
+        """DAQmxControlWatchdogTask: Reset Timer (pet) or Clear Expiration."""
+        self.poll()
+        cleared = False
+        with self._wake:
+            if action not in (RESET_TIMER, CLEAR_EXPIRATION):
                 raise DaqmxError(-200452, f"Invalid watchdog action {action}.")
+            if action == RESET_TIMER and wd.expired:
+                raise DaqmxError(ERR["CANT_RESET_EXPIRED_WATCHDOG"])
+            if action == CLEAR_EXPIRATION and wd.expired:
+                wd.expired_at, cleared = None, True
+            if wd.running and wd.timeout_s > 0:
+                wd.deadline = self.clock.now() + wd.timeout_s
             self._wake.notify_all()
+        if cleared:
+            with self._dev_lock:
+                self._on_clear(wd)
 
     # ------------------------------------------------------------------ expiry
     def poll(self) -> None:
         """Expire every running timer whose deadline the clock has passed (at the deadline itself)."""
-        with self._lock:
+        with self._wake:
             now = self.clock.now()
-            for wd in self.tasks.values():
-                if wd.running and not wd.expired and wd.deadline <= now:
-                    wd.expired_at = wd.deadline
+            due = [wd for wd in self.tasks.values() if wd.running and not wd.expired and wd.deadline <= now]
+            for wd in due:
+                wd.expired_at = wd.deadline
+        if due:
+            with self._dev_lock:
+                for wd in due:
                     self._on_expire(wd, wd.deadline)
 
-    def _ensure_thread(self) -> None:
-        if self._thread is None or not self._thread.is_alive():
-            self._halt = False
-            self._thread = threading.Thread(target=self._run, name="simdaq-watchdog", daemon=True)
-            self._thread.start()
-
     def _run(self) -> None:
-        with self._lock:
-            while not self._halt:
-                self.poll()
+        while True:
+            self.poll()
+            with self._wake:
+                if self._halt:
+                    return
                 pending = [wd.deadline for wd in self.tasks.values() if wd.running and not wd.expired]
-                if not pending:
-                    self._wake.wait(MAX_WAIT_WALL_S)
-                    continue
-                wall = (min(pending) - self.clock.now()) / self.clock.time_scale
+                wall = MAX_WAIT_WALL_S if not pending else (min(pending) - self.clock.now()) / self.clock.time_scale
                 if wall > 0:
                     self._wake.wait(min(wall, MAX_WAIT_WALL_S))
 
     def halt(self) -> None:
         """Power off: the thread ends (tasks are forgotten)."""
-        with self._lock:
+        with self._wake:
             self._halt = True
             self.tasks.clear()
             self._wake.notify_all()
