@@ -1,8 +1,9 @@
 """Simulated multifunction DAQ (an NI X-series card): tasks, hardware timing, triggers, buffers.
 
-The device model behind ``mock_devices.daq_grpc``: it knows DAQmx semantics (task states, finite and
-continuous sample clocks, digital-edge start triggers, the input buffer and its overflow) but nothing
-of gRPC. The analog world comes from a bench (``mock_devices.bench_api.BenchView``): when an AI task
+The device model behind ``mock_devices.daq_grpc``: it knows DAQmx semantics (task states and auto-start,
+finite and continuous sample clocks, digital-edge start triggers on relative or absolute terminals, the
+input buffer and its overflow, partial reads, the watchdog timer of ``mock_devices.daq_watchdog``) but
+nothing of gRPC. One module for one card model (hence its length). The analog world comes from a bench (``mock_devices.bench_api.BenchView``): when an AI task
 runs, the device asks ``bench.run_record`` for each block of samples, feeding it what AO puts out at
 those instants, and turns volts, amps and metres into AI voltages.
 
