@@ -14,6 +14,7 @@ Time is simulated seconds on ``bench.clock``; read and wait timeouts are wall se
 
 from __future__ import annotations
 
+import logging
 import threading
 import time
 from collections import deque
@@ -34,6 +35,7 @@ OVERFLOW, NOT_YET, BEYOND_END, WAIT_TIMEOUT = -200279, -200284, -200278, -200560
 EAGER_MAX = 2_000_000  # finite records up to this many samples are computed (speculatively) when AI starts
 AI_RANGES_V = (0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0)  # X-series input ranges (±)
 # digital-edge start trigger sources the card routes (terminal names are case-insensitive in DAQmx)
+LOG = logging.getLogger("labrig.sim.daq")  # WARNING lines reach a bare `labrig sim`'s stderr (logging.lastResort)
 TERMINALS = {t.lower(): t for t in ("ai/StartTrigger", "ao/StartTrigger", *(f"PFI{i}" for i in range(16)))}
 
 
@@ -266,12 +268,15 @@ class SimDevice:
         if not locked:
             return
         self._ao_will_change(t_exp)
+        was = {p: float(self.ao_values(p, np.array([t_exp]))[0]) for p in locked}
         for phys in locked:
             value = wd.states[phys][0]
             self.ao_lock[phys], self.ao_level[phys] = (t_exp, value), value
         for o in self.tasks.values():
             if o.kind == "ao" and o.state != "idle" and locked & {c.phys for c in o.chans}:
                 o.state, o.sticky_error = "idle", ERR["WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED"]
+        LOG.warning("%s: watchdog %s expired at t=%.3f s (%.3f s after its last reset): %s", self.name, wd.name,
+                    t_exp, wd.timeout_s, ", ".join(f"{p} {was[p]:g} V -> {wd.states[p][0]:g} V" for p in sorted(locked)))
 
     def _unlock(self, wd: Watchdog) -> None:
         for phys in wd.states:  # the outputs keep the expiration value until written
