@@ -84,7 +84,7 @@ class DaqCfg(_Strict):
     displacement_channel: str = "ai2"
     current_gain_A_per_V: float = Field(1e-3, gt=0)
     displacement_m_per_V: float = Field(1e-3, gt=0)
-    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False)
+    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False, strict=True)
 
 
 class Instruments(_Strict):

@@ -124,3 +124,27 @@ def test_a_host_that_keeps_resetting_is_never_cut_off() -> None:
         assert sim.ao_output_V() == 0.8 and not rig.watchdog.expired()
         rig.stop()
         assert rig.watchdog.failed_resets == 0
+
+
+def test_the_rig_arms_the_watchdog_with_its_clock() -> None:
+    """`open_rig` (what `labrig run` uses) arms the device's watchdog on the drive with the rig file's timeout and
+    the rig clock's scale; closing the rig disarms it with the drive at 0 V."""
+    from labrig.simulate import simulated_rig
+
+    with simulated_rig(time_scale=1000.0) as (rig, sims):
+        (task,) = (t for t in sims.daq.device.tasks.values() if t.wd is not None)
+        assert task.state == "running" and task.wd.states == {"ao0": (0.0, 10322)}  # 0 V, voltage output
+        assert task.wd.timeout_s == max(5.0, WALL_FLOOR_S * 1000.0) == rig.daq.watchdog.timeout_s
+    assert not any(t.wd for t in sims.daq.device.tasks.values())
+
+
+@pytest.mark.parametrize("value", [0, -1, "nan", True])
+def test_a_bad_watchdog_timeout_in_the_rig_file_is_refused(value: object) -> None:
+    from labrig.errors import BadInput
+    from labrig.rig import parse_rig
+
+    data = {"instruments": {"keyence": {"address": "socket://127.0.0.1:1"}, "loadcell": {"address": "x"},
+                            "impedance": {"address": "y"},
+                            "daq": {"address": "z", "watchdog_s": float(value) if value == "nan" else value}}}
+    with pytest.raises(BadInput, match="instruments.daq.watchdog_s"):
+        parse_rig(data, "rig.toml")
