@@ -65,6 +65,7 @@ def test_status_codes_are_nidaqmx_codes() -> None:
         assert DAQmxErrors[name].value == code, name
 
 
+@pytest.mark.parametrize("sim", [2.0], indirect=True, ids=["2x"])  # DAQmx's default buffer = 5 wall s at 2x
 def test_ai_ao_sync_with_relative_trigger_terminal(sim: SimDaq, channel: grpc.Channel) -> None:
     """ai_ao_sync.py: AO armed on "ai/StartTrigger" starts on AI's first sample clock edge."""
     n, fs, events = 1000, 1000.0, 3
@@ -209,6 +210,7 @@ def test_unknown_trigger_terminal_fails_at_start_with_the_routing_code(channel: 
         assert e.value.error_code == DAQmxErrors.INVALID_ROUTING_SOURCE_TERMINAL_NAME_ROUTING.value
 
 
+@pytest.mark.parametrize("sim", [2.0], indirect=True, ids=["2x"])  # room for a loaded machine's delays
 def test_acquisition_is_causal(sim: SimDaq, channel: grpc.Channel) -> None:
     """AI started first, then an on-demand write and later a timed AO without a shared trigger: each sample
     reads what AO put out at its own instant (0 V, then the step, then the waveform)."""
@@ -234,6 +236,7 @@ def test_acquisition_is_causal(sim: SimDaq, channel: grpc.Channel) -> None:
     k_a, k_b = int((a - ai_t0) * fs), int(np.ceil((b - ai_t0) * fs))
     assert np.allclose(v[:k_a], 0.0, atol=1e-3)
     k_w = int(np.ceil((t_wave - ai_t0) * fs - 1e-6))
+    assert 0 < k_a <= k_b < k_w < n - 100  # the write and the AO start happened inside the record
     assert np.allclose(v[k_b + 1:k_w], 0.5, atol=1e-3)
     expected = np.linspace(-1.0, 1.0, 100)[np.arange(n - k_w) % 100]
     np.testing.assert_allclose(v[k_w:], expected, atol=1e-3)
