@@ -107,7 +107,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"lost samples    {lost} (continuity of the sample counter on all 3 channels)")
     if wd is not None:
         print(f"watchdog        {wd.timeout_s:g} s, reset every {wd.period_wall_s:g} s, "
-              f"{wd.failed_resets} failed wd, expired: {wd.expired_seen}")
+              f"{wd.failed_resets} failed resets, expired: {wd.expired_seen}")
     print(f"error           {error or 'none'}")
     ok = not error and lost == 0 and rate >= a.target and (wd is None or wd.failed_resets == 0)
     print("PASS" if ok else "FAIL", f"(target {a.target:,.0f} S/s per channel, no loss)")
