@@ -83,7 +83,7 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
         # the device expired it exactly one timeout after the last reset, which came before the kill
         last_reset = wd.expired_at - TIMEOUT_RIG_S
         assert t_kill - TIMEOUT_RIG_S / RESETS_PER_TIMEOUT - 0.2 * SCALE <= last_reset <= t_kill
-        assert t_zero - t_kill <= TIMEOUT_RIG_S + 0.05 * SCALE  # seen by the poller within 50 ms wall
+        assert t_zero - t_kill <= TIMEOUT_RIG_S + 0.25 * SCALE  # seen by the poller within 0.25 s wall
         with capsys.disabled():
             print(f"\nwatchdog: host killed -> drive 0 V after {t_zero - t_kill:.1f} rig s "
                   f"({w_zero - w_kill:.3f} wall s) at {SCALE:g}x; timeout {TIMEOUT_RIG_S:g} rig s")
@@ -105,7 +105,7 @@ def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
         sim.inject("disconnect")
         assert rig.abort() is False  # cannot write 0 V over a dead link ...
         t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
-        assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 0.05 * SCALE  # ... the device does it
+        assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 0.25 * SCALE  # ... the device does it
         sim.clear_fault()
         assert readback_when_back(rig) == pytest.approx(0.0, abs=1e-3)
         assert rig.watchdog is not None and rig.watchdog.expired()
