@@ -13,7 +13,8 @@ AI task then starts both on the same sample clock edge, so sample k of the drive
 belong to the same instant.
 
 Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive.
-Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
+With ``watchdog_s`` the device's own watchdog timer puts 0 V out when this host stops resetting it
+(``drivers.daq_watchdog``); ``drive_readback_V()`` reads the drive back. Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
 """
 
 from __future__ import annotations
