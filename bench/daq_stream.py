@@ -4,7 +4,7 @@ The simulated server runs in its own process (as NI's server would), with a benc
 a sample counter: every AI channel reads a 10 mV staircase that steps once per sample and wraps every
 1000 samples, so a lost, repeated or reordered sample shows as a step other than +1.
 
-    python bench/daq_stream.py [--rate 250000] [--seconds 10] [--block 25000]
+    python bench/daq_stream.py [--rate 250000] [--seconds 10] [--block 25000] [--watchdog 5]
 
 Prints the rate achieved per channel and whether any sample was lost. Exit status 1 if samples were
 lost or the rate fell short of the target (100 kS/s per channel by default).
@@ -58,6 +58,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--block", type=int, default=25_000, help="samples per channel per read")
     ap.add_argument("--target", type=float, default=100_000.0, help="pass mark, S/s per channel")
+    ap.add_argument("--watchdog", type=float, default=None, metavar="S",
+                    help="arm the DAQ watchdog with this timeout (s) while streaming, as labrig run does")
     a = ap.parse_args(argv)
 
     from drivers.daq import DaqRig
@@ -67,7 +69,8 @@ def main(argv: list[str] | None = None) -> int:
     proc = mp.get_context("spawn").Process(target=serve, args=(child,), daemon=True)
     proc.start()
     address = parent.recv()
-    rig = DaqRig(grpc_target=address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V)
+    rig = DaqRig(grpc_target=address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V,
+                 watchdog_s=a.watchdog)
     n_read, lost, last, error = 0, 0, None, ""
     read_s: list[float] = []
     try:
@@ -84,11 +87,13 @@ def main(argv: list[str] | None = None) -> int:
             last = s[:, -1:]
             n_read += a.block
         elapsed = time.perf_counter() - t_start
+        wd = rig.watchdog
         rig.stop()
     except InstrumentError as e:
-        elapsed, error = time.perf_counter() - t_start, f"{type(e).__name__}: {e}"
+        elapsed, error, wd = time.perf_counter() - t_start, f"{type(e).__name__}: {e}", rig.watchdog
     finally:
         rig.abort()
+        rig.disarm_watchdog()
         parent.send("stop")
         proc.join(5)
 
@@ -100,8 +105,11 @@ def main(argv: list[str] | None = None) -> int:
     if read_s:
         print(f"read call       median {1e3 * np.median(read_s):.1f} ms, max {1e3 * max(read_s):.1f} ms")
     print(f"lost samples    {lost} (continuity of the sample counter on all 3 channels)")
+    if wd is not None:
+        print(f"watchdog        {wd.timeout_s:g} s, reset every {wd.period_wall_s:g} s, "
+              f"{wd.failed_resets} failed resets, expired: {wd.expired_seen}")
     print(f"error           {error or 'none'}")
-    ok = not error and lost == 0 and rate >= a.target
+    ok = not error and lost == 0 and rate >= a.target and (wd is None or wd.failed_resets == 0)
     print("PASS" if ok else "FAIL", f"(target {a.target:,.0f} S/s per channel, no loss)")
     return 0 if ok else 1
 

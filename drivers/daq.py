@@ -13,7 +13,8 @@ AI task then starts both on the same sample clock edge, so sample k of the drive
 belong to the same instant.
 
 Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive.
-Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
+With ``watchdog_s`` the device's own watchdog timer puts 0 V out when this host stops resetting it
+(``drivers.daq_watchdog``); ``drive_readback_V()`` reads the drive back. Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
 """
 
 from __future__ import annotations
@@ -31,10 +32,11 @@ from nidaqmx._grpc_interpreter import GrpcStubInterpreter  # pinned nidaqmx: see
 from nidaqmx.constants import AcquisitionType, Edge
 from nidaqmx.errors import DaqError, DaqNotFoundError
 from nidaqmx.errors import RpcError as NiRpcError
-from nidaqmx.stream_readers import AnalogMultiChannelReader
+from nidaqmx.stream_readers import AnalogMultiChannelReader, AnalogSingleChannelReader
 from nidaqmx.stream_writers import AnalogSingleChannelWriter
 from nidaqmx.task._task import _TaskAlternateConstructor
 
+from drivers.daq_watchdog import DriveWatchdog
 from drivers.errors import (BufferOverflow, Disconnected, InstrumentError, InstrumentErrorReply,
                             InstrumentTimeout)
 from drivers.transcript import CallReplayer, Transcript
@@ -43,6 +45,7 @@ KEYS = ("t_s", "voltage_V", "current_A", "displacement_m")
 OVERFLOW_CODES = {-200279, -200010}  # samples no longer available, input FIFO overflow
 TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-until-done, operation timed out
 GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
+WATCHDOG_EXPIRED_WRITE = -200678  # DAQmxErrors.WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED
 GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
 CHANNEL_OPTIONS = [
     ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
@@ -78,6 +81,8 @@ class DaqRig:
         transcript: Transcript | None = None,
         name: str = "daq",
         replay: CallReplayer | None = None,
+        watchdog_s: float | None = None,
+        time_scale: float = 1.0,
     ):
         self.device, self.grpc_target, self.name = device, grpc_target, name
         self.drive_channel = drive_channel
@@ -95,6 +100,9 @@ class DaqRig:
         self._pos = 0  # samples per channel read since start_continuous
         self._drive_live = False  # a timed AO task may be putting out non-zero volts
         self._closed = False
+        self.watchdog: DriveWatchdog | None = None
+        if watchdog_s is not None and replay is None:
+            self.arm_watchdog(watchdog_s, time_scale)
 
     @classmethod
     def from_replay(cls, transcript: Transcript, device: str = "daq", **settings: Any) -> "DaqRig":
@@ -306,7 +314,11 @@ class DaqRig:
             try:
                 task.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
                                                      max_val=self.ao_range_V)
-                AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=10.0)
+                try:
+                    AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=10.0)
+                except DaqError as e:  # our watchdog expired: the device holds the drive at its 0 V expiration state
+                    if not (self.watchdog is not None and e.error_code == WATCHDOG_EXPIRED_WRITE):
+                        raise
             finally:
                 self._release()
         self._drive_live = False
@@ -324,6 +336,8 @@ class DaqRig:
             return True
         except Exception:
             self._release()
+            if self.watchdog is not None:  # 0 V not confirmed: let the device's watchdog put it out
+                self.watchdog.stop_resetting()
             return False
 
     def close(self) -> None:
@@ -333,7 +347,10 @@ class DaqRig:
         try:
             if self._replay is None:  # a replay ends where the caller stops; the recorded close is not checked
                 self.zero_output()
+            self.disarm_watchdog()  # only once 0 V is written; otherwise it stays armed and expires to 0 V
         finally:
+            if self.watchdog is not None:
+                self.watchdog.stop_resetting()
             self._release()
             self._closed = True
             if self._channel is not None:
@@ -346,10 +363,52 @@ class DaqRig:
         if exc_type is None:
             self.close()
         else:  # do not mask the original error with a failure to zero
-            self.abort()
+            if self.abort():
+                self.disarm_watchdog()
             self._closed = True
             if self._channel is not None:
                 self._channel.close()
+
+    # ------------------------------------------------------------------------------ watchdog and readback
+    def arm_watchdog(self, timeout_s: float, time_scale: float = 1.0) -> None:
+        """Arm the device's watchdog timer: 0 V on the drive if the host stops resetting it for ``timeout_s`` rig
+        seconds (never less than ``drivers.daq_watchdog.WALL_FLOOR_S`` wall seconds); a daemon thread resets it."""
+        opts = None if self._channel is None else nidaqmx.GrpcSessionOptions(grpc_channel=self._channel,
+                                                                             session_name="")
+        wd = DriveWatchdog(self.device, self.drive_channel, timeout_s, time_scale, grpc_options=opts)
+        with self._errors("arm_watchdog"):
+            wd.arm()
+        self.watchdog = wd
+
+    def disarm_watchdog(self) -> None:
+        """Stop resetting the watchdog and clear its task (call with the drive at 0 V)."""
+        wd, self.watchdog = self.watchdog, None
+        if wd is not None:
+            wd.disarm()
+
+    def drive_readback_V(self, n: int = 20, fs: float = 1000.0, timeout_s: float = 10.0) -> float:
+        """The drive as the strip sees it: the mean of ``n`` samples of the voltage AI channel (releases what
+        runs first). Raises ``Disconnected`` etc. when it cannot be read: then the drive state is unknown."""
+        n, fs = int(n), float(fs)
+
+        def run() -> bytes:
+            self._release()
+            with self._errors("drive_readback_V"):
+                task = self._new_task("readback")
+                try:
+                    task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
+                                                         max_val=self.ai_range_V)
+                    task.timing.cfg_samp_clk_timing(fs, sample_mode=AcquisitionType.FINITE, samps_per_chan=n)
+                    reader = AnalogSingleChannelReader(task.in_stream)
+                    reader.verify_array_shape = False
+                    raw = np.zeros(n)
+                    task.start()
+                    reader.read_many_sample(raw, n, timeout=timeout_s)
+                finally:
+                    self._release()
+            return to_bytes(np.array([raw.mean()]))
+
+        return float(np.frombuffer(self._call("drive_readback_V", {"n": n, "fs": fs}, run), dtype="<f8")[0])
 
     def describe(self) -> str:
         """One line for the session file: where and how the rig is wired."""

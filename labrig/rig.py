@@ -11,7 +11,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [instruments.impedance] address (VISA resource name), model ("IM3590", "E4990A"; none = "SIM-WIDE",
                             the analyser of labrig's older simulator: drivers/analyser_models.py)
     [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
-                            channels, current_gain_A_per_V, displacement_m_per_V
+                            channels, current_gain_A_per_V, displacement_m_per_V, watchdog_s (rig seconds
+                            without a reset from the host before the DAQ puts 0 V on the drive by itself)
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
+from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
 from drivers import analyser_models
 from drivers.impedance_analyzer import ImpedanceAnalyzer
@@ -85,6 +87,7 @@ class DaqCfg(_Strict):
     displacement_channel: str = "ai2"
     current_gain_A_per_V: float = Field(1e-3, gt=0)
     displacement_m_per_V: float = Field(1e-3, gt=0)
+    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False, strict=True)
 
 
 class Instruments(_Strict):
@@ -203,6 +206,8 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             current_gain_A_per_V=d.current_gain_A_per_V,
             displacement_m_per_V=d.displacement_m_per_V,
             transcript=tr,
+            watchdog_s=d.watchdog_s,
+            time_scale=clock.time_scale,
         )
         opened.append(daq)
         analyzer = analyser_models.open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr, sweep_timeout_s=600.0)

@@ -9,7 +9,12 @@ gRPC status UNKNOWN with trailing metadata ``ni-error`` (the DAQmx code) and, fo
         task = nidaqmx.Task("t", grpc_options=nidaqmx.GrpcSessionOptions(
             grpc_channel=grpc.insecure_channel(sim.address), session_name="t"))
 
-Faults: ``sim.inject("disconnect" | "timeout" | "overflow" | "error")``, ``sim.clear_fault()``.
+Besides AI/AO voltage tasks it serves NI-DAQmx's watchdog timer (CreateWatchdogTimerTaskEx,
+CfgWatchdogAOExpirStates, ControlWatchdogTask, watchdog attributes), start-trigger and timing properties, and
+Every N Samples events (a server stream). docs/instruments_daq.md lists what is implemented.
+
+Faults: ``sim.inject("disconnect" | "timeout" | "overflow" | "error")``, ``sim.clear_fault()``. A
+"disconnect" is a lost link: data tasks are cleared, the card's watchdog timers run on and expire.
 """
 
 from __future__ import annotations
@@ -17,6 +22,7 @@ from __future__ import annotations
 import functools
 import re
 import threading
+import time
 from concurrent import futures
 from typing import Any, Callable, Sequence
 
@@ -27,66 +33,16 @@ from nidaqmx._stubs import nidaqmx_pb2_grpc as pb_grpc
 from scipy.signal import lfilter
 
 from mock_devices.bench_api import BenchView
-from mock_devices.daq_sim import ERR_MESSAGES, DaqmxError, SimDevice
+from mock_devices.daq_attributes import getters, setters
+from mock_devices.daq_errors import ERR_MESSAGES, DaqmxError
+from mock_devices.daq_sim import RISING, SimDevice
 
-DRIVER_VERSION = (25, 5, 0)  # NI-DAQmx version the server claims (>= 24.5: reads use DefaultNumberOfSamplesToRead)
 GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
 FAULTS = ("disconnect", "timeout", "overflow", "error")
-# the one-shot "error" skips these: nidaqmx swallows failures of the version query and of error lookups
-NO_FAULT_PREFIXES = ("GetErrorString", "GetExtendedErrorInfo", "GetSystemInfoAttribute")
-AI_VOLTAGE, CHAN_AI, CHAN_AO, DO_NOT_OVERWRITE = 10322, 10100, 10102, 10159
-
-
-def _attributes(dev: SimDevice) -> dict[tuple[str, int], Callable[..., Any]]:
-    """(scope, attribute id) -> getter(task or device name, channel). Ids are nidaqmx's."""
-    t = dev.task
-    names = lambda n: ", ".join(c.name for c in t(n).chans)  # noqa: E731
-    return {
-        ("SystemInfo", 0x1272): lambda *_: DRIVER_VERSION[0],
-        ("SystemInfo", 0x1923): lambda *_: DRIVER_VERSION[1],
-        ("SystemInfo", 0x2F22): lambda *_: DRIVER_VERSION[2],
-        ("SystemInfo", 0x193B): lambda *_: dev.name,  # device names
-        ("Device", 0x0631): lambda *_: dev.product_type,
-        ("Device", 0x0632): lambda *_: 0x1D1E_6361,  # serial number
-        ("Device", 0x22CA): lambda *_: True,  # is simulated
-        ("Device", 0x231E): lambda *_: ", ".join(f"{dev.name}/{p}" for p in dev.ai_phys),
-        ("Device", 0x231F): lambda *_: ", ".join(f"{dev.name}/{p}" for p in dev.ao_phys),
-        ("Task", 0x1276): lambda n, _: t(n).name,
-        ("Task", 0x1273): lambda n, _: names(n),
-        ("Task", 0x2181): lambda n, _: len(t(n).chans),
-        ("Task", 0x230E): lambda n, _: dev.name,
-        ("Task", 0x29BA): lambda n, _: 1,
-        ("Task", 0x1274): lambda n, _: dev.is_done(n),
-        ("Read", 0x217B): lambda n, _: len(t(n).chans),
-        ("Read", 0x1223): lambda n, _: dev.available(t(n)),
-        ("Read", 0x31E8): lambda n, _: (dev.available(t(n)) if t(n).mode != 10178 or t(n).read_all_avail
-                                        else t(n).samps - t(n).read_pos),
-        ("Read", 0x1823): lambda n, _: names(n),
-        ("Read", 0x1215): lambda n, _: t(n).read_all_avail,
-        ("Read", 0x1221): lambda n, _: t(n).read_pos,
-        ("Read", 0x192A): lambda n, _: dev.acquired(t(n)),
-        ("Read", 0x1211): lambda n, _: DO_NOT_OVERWRITE,
-        ("Write", 0x217E): lambda n, _: len(t(n).chans),
-        ("Write", 0x1460): lambda n, _: t(n).samps,
-        ("Timing", 0x1300): lambda n, _: t(n).mode,
-        ("Timing", 0x1310): lambda n, _: t(n).samps,
-        ("Timing", 0x1344): lambda n, _: t(n).rate or 0.0,
-        ("Buffer", 0x186C): lambda n, _: t(n).buf_user or t(n).buf_size or 0,
-        ("Buffer", 0x186D): lambda n, _: 0 if t(n).ao_buf is None else t(n).ao_buf.shape[1],
-        ("Chan", 0x187F): lambda n, c: CHAN_AI if t(n).kind == "ai" else CHAN_AO,
-        ("Chan", 0x0695): lambda n, c: AI_VOLTAGE,
-        ("Chan", 0x1108): lambda n, c: AI_VOLTAGE,
-    }
-
-
-def _setters(dev: SimDevice) -> dict[tuple[str, int], Callable[[str, Any], None]]:
-    def read_all(n: str, v: Any) -> None:
-        dev.task(n).read_all_avail = bool(v)
-
-    def in_buf(n: str, v: Any) -> None:
-        dev.task(n).buf_user = int(v)
-
-    return {("Read", 0x1215): read_all, ("Buffer", 0x186C): in_buf}
+# the one-shot "error" skips these: nidaqmx swallows failures of the version query and of error lookups, and
+# the watchdog resets come from a host's background thread (they would take the error meant for the next call)
+NO_FAULT_PREFIXES = ("GetErrorString", "GetExtendedErrorInfo", "GetSystemInfoAttribute", "ControlWatchdogTask")
+ACQUIRED_INTO_BUFFER = 1  # nidaqmx.constants.EveryNSamplesEventType
 
 
 class DaqServicer(pb_grpc.NiDAQmxServicer):
@@ -94,8 +50,8 @@ class DaqServicer(pb_grpc.NiDAQmxServicer):
 
     def __init__(self, device: SimDevice):
         self.dev = device
-        self._get = _attributes(device)
-        self._set = _setters(device)
+        self._get = getters(device)
+        self._set = setters(device)
 
     # -------------------------------------------------------------------- session and channels
     def CreateTask(self, req, ctx):
@@ -123,7 +79,8 @@ class DaqServicer(pb_grpc.NiDAQmxServicer):
         return pb.CfgSampClkTimingResponse()
 
     def CfgDigEdgeStartTrig(self, req, ctx):
-        self.dev.cfg_start_trigger(req.task.name, req.trigger_source)
+        self.dev.cfg_start_trigger(req.task.name, req.trigger_source, req.trigger_edge_raw or req.trigger_edge
+                                   or RISING)
         return pb.CfgDigEdgeStartTrigResponse()
 
     def DisableStartTrig(self, req, ctx):
@@ -166,13 +123,58 @@ class DaqServicer(pb_grpc.NiDAQmxServicer):
         return pb.WriteAnalogScalarF64Response()
 
     def ReadAnalogF64(self, req, ctx):
-        data = self.dev.read(req.task.name, req.num_samps_per_chan, req.timeout, ctx.is_active)
+        status = 0
+        try:
+            data = self.dev.read(req.task.name, req.num_samps_per_chan, req.timeout, ctx.is_active)
+        except DaqmxError as e:
+            if e.partial is None:
+                raise
+            data, status = e.partial, e.code  # a partial read: the samples travel with the status, as NI's server
         n = data.shape[1]
         if data.size > req.array_size_in_samps:
             raise DaqmxError(-200229, "Buffer is too small to fit read data.", samps_per_chan_read=0)
         flat = data.T.ravel() if (req.fill_mode_raw or req.fill_mode) == 1 else data.ravel()
         # a list builds the repeated field faster than iterating a numpy array
-        return pb.ReadAnalogF64Response(read_array=flat.tolist(), samps_per_chan_read=n)
+        return pb.ReadAnalogF64Response(status=status, read_array=flat.tolist(), samps_per_chan_read=n)
+
+    def RegisterEveryNSamplesEvent(self, req, ctx):
+        """Server stream: one message each time another ``n_samples`` per channel are in the input buffer."""
+        t = self.dev.task(req.task.name)
+        kind = req.every_n_samples_event_type_raw or req.every_n_samples_event_type
+        if t.kind != "ai" or kind != ACQUIRED_INTO_BUFFER or req.n_samples < 1:
+            raise DaqmxError(-200452, "Every N Samples events: acquired-into-buffer on an AI task only.")
+        ctx.send_initial_metadata(())  # nidaqmx waits for it before it goes on (registration confirmed)
+        return self._every_n(t, int(req.n_samples), kind, ctx)
+
+    def _every_n(self, t, n, kind, ctx):
+        fired = 0
+        while ctx.is_active() and self.dev.tasks.get(t.name) is t:
+            with self.dev._lock:
+                got = self.dev.acquired(t) if t.state == "running" else 0
+                if t.state != "running":
+                    fired = 0  # a restarted task counts again from its first sample
+            if got >= (fired + 1) * n:
+                fired += 1
+                yield pb.RegisterEveryNSamplesEventResponse(every_n_samples_event_type_raw=kind, n_samples=n)
+                continue
+            wait = ((fired + 1) * n - got) / float(t.rate or 1.0) / self.dev.bench.clock.time_scale
+            time.sleep(min(max(wait, 0.001), 0.05))
+
+    # -------------------------------------------------------------------- watchdog timer
+    def CreateWatchdogTimerTaskEx(self, req, ctx):
+        name, new = self.dev.create_watchdog(req.session_name, req.device_name, req.timeout)
+        resp = pb.CreateWatchdogTimerTaskExResponse(new_session_initialized=new)
+        resp.task.name = name
+        return resp
+
+    def CfgWatchdogAOExpirStates(self, req, ctx):
+        self.dev.cfg_watchdog_ao(req.task.name, req.channel_names, list(req.expir_state_array),
+                                 list(req.output_type_array))
+        return pb.CfgWatchdogAOExpirStatesResponse()
+
+    def ControlWatchdogTask(self, req, ctx):
+        self.dev.watchdog.control(self.dev.watchdog_of(req.task.name), req.action_raw or req.action)
+        return pb.ControlWatchdogTaskResponse()
 
     def GetErrorString(self, req, ctx):
         return pb.GetErrorStringResponse(error_string=ERR_MESSAGES.get(req.error_code, f"DAQmx error {req.error_code}"))
@@ -181,7 +183,7 @@ class DaqServicer(pb_grpc.NiDAQmxServicer):
         return pb.GetExtendedErrorInfoResponse(error_string="")
 
 
-_ATTR_RPC = re.compile(r"^(Get|Set)(SystemInfo|Device|Task|Read|Write|Timing|Buffer|Chan)Attribute"
+_ATTR_RPC = re.compile(r"^(Get|Set)(SystemInfo|Device|Task|Read|Write|Timing|Buffer|Chan|Trig|Watchdog)Attribute"
                        r"(Bool|Double|Int32|UInt32|UInt64|String)$")
 
 
@@ -200,8 +202,27 @@ def _attribute_rpc(rpc: str) -> Callable[..., Any]:
         if verb == "Set":
             fn(owner, req.value_raw if kind == "Int32" else req.value)
             return resp_type()
-        value = fn(owner, getattr(req, "channel", ""))
+        value = fn(owner, getattr(req, "lines" if scope == "Watchdog" else "channel", ""))
         return resp_type(**{"value_raw" if kind == "Int32" else "value": value})
+
+    handler.__name__ = rpc
+    return handler
+
+
+def _reset_rpc(rpc: str) -> Callable[..., Any]:
+    """Reset{Timing,Trig}Attribute: back to the default (start trigger: none; timing: on demand is not undone)."""
+    scope = rpc[len("Reset"):-len("Attribute")]
+    resp_type = getattr(pb, f"{rpc}Response")
+
+    def handler(self: DaqServicer, req: Any, ctx: Any) -> Any:
+        attr = req.attribute_raw or req.attribute
+        if scope == "Trig" and attr in (0x1393, 0x1407):
+            self.dev.cfg_start_trigger(req.task.name, None)
+        elif scope == "Trig" and attr == 0x1404:
+            self.dev.cfg_start_trigger(req.task.name, self.dev.task(req.task.name).trigger, RISING)
+        else:
+            raise DaqmxError(-200452, f"Resetting property 0x{attr:X} is not supported by the simulated device.")
+        return resp_type()
 
     handler.__name__ = rpc
     return handler
@@ -210,6 +231,8 @@ def _attribute_rpc(rpc: str) -> Callable[..., Any]:
 for _rpc in pb.DESCRIPTOR.services_by_name["NiDAQmx"].methods_by_name:
     if _ATTR_RPC.match(_rpc):
         setattr(DaqServicer, _rpc, _attribute_rpc(_rpc))
+    elif _rpc == "ResetTrigAttribute":
+        setattr(DaqServicer, _rpc, _reset_rpc(_rpc))
 
 
 def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
@@ -219,7 +242,7 @@ def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
     def call(req: Any, ctx: grpc.ServicerContext) -> Any:
         try:
             if not fn.__name__.startswith(NO_FAULT_PREFIXES):
-                dev.check_call_fault()
+                dev.check_call_fault()  # takes the device's lock: a watchdog reset must not wait for it
             return fn(req, ctx)
         except DaqmxError as e:
             md = [("ni-error", str(e.code))]
@@ -265,12 +288,16 @@ class SimDaq:
             self._server = server
         return self
 
-    def stop(self, grace_s: float | None = 0.5) -> None:
+    def stop(self, grace_s: float | None = 0.5, link_lost: bool = False) -> None:
+        """Stop serving. The device's tasks are cleared (outputs hold), and unless ``link_lost`` the card is
+        powered off too; after a lost link its watchdog timers run on and expire as the hardware's would."""
         with self._lock:
             server, self._server = self._server, None
         if server is not None:
-            self.device.clear_all()
+            self.device.clear_all(keep_watchdogs=link_lost)
             server.stop(grace_s).wait()
+        if not link_lost:
+            self.device.power_off()
 
     @property
     def address(self) -> str:
@@ -286,7 +313,7 @@ class SimDaq:
             raise ValueError(f"unknown fault {fault!r}; expected one of {FAULTS}")
         self.fault = fault
         if fault == "disconnect":
-            self.stop(grace_s=None)  # abrupt: in-flight calls are cancelled
+            self.stop(grace_s=None, link_lost=True)  # abrupt: in-flight calls are cancelled
         else:
             self.device.inject(fault, code)
 
@@ -300,6 +327,7 @@ class SimDaq:
     def ao_output_V(self, channel: str = "ao0") -> float:
         """What the AO channel puts out right now (V)."""
         with self.device._lock:
+            self.device.watchdog.poll()
             return float(self.device.ao_values(channel, np.array([self.device.bench.clock.now()]))[0])
 
     def __enter__(self) -> "SimDaq":
@@ -313,17 +341,24 @@ class StandInBench:
     """A tiny linear bench for tests and benchmarks (not the world): R-only strip, first-order bending.
 
     current = V / R; displacement = k·V through a first-order lag of time constant ``tau_s``
-    (exact discretisation, state carried across contiguous records).
+    (exact discretisation, state carried across contiguous records). A record that starts where an earlier
+    one started replaces it and what followed (the state is taken back to that start), as the world does.
     """
 
     def __init__(self, clock: Any, R_ohm: float = 100.0, tau_s: float = 0.05, k_m_per_V: float = 1e-3):
         self.clock, self.R_ohm, self.tau_s, self.k_m_per_V = clock, R_ohm, tau_s, k_m_per_V
         self._y = 0.0
+        self._starts: list[tuple[float, float]] = []  # (t0, state before) of recent records
         self.records: list[tuple[float, float, int]] = []  # (t0, fs, n) of each call
 
     def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
         v = np.asarray(drive_V, dtype=float)
         self.records.append((t0, fs, len(v)))
+        again = next((i for i, (s, _) in enumerate(self._starts) if abs(s - t0) < 0.5 / fs), None)
+        if again is not None:
+            self._y = self._starts[again][1]
+            del self._starts[again:]
+        self._starts = self._starts[-63:] + [(t0, self._y)]
         a = np.exp(-1.0 / (fs * self.tau_s))
         y, _ = lfilter([1.0 - a], [1.0, -a], self.k_m_per_V * v, zi=[a * self._y])
         self._y = float(y[-1]) if len(y) else self._y

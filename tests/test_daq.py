@@ -16,6 +16,7 @@ from labrig.clock import ScaledClock
 from mock_devices.daq_grpc import SimDaq, StandInBench
 
 GAIN_A_PER_V, M_PER_V = 2e-3, 5e-4  # not the driver defaults, so the scaling is really exercised
+BUFFER_S = 10_000.0  # continuous input buffer: 100 wall s at 1000x, which a loaded machine cannot overrun
 
 
 @pytest.fixture
@@ -71,7 +72,7 @@ def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
 def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
     fs, period = 100.0, 50
     block = _sine(period, fs, f=fs / period)
-    rig.start_continuous(fs, drive_block=block, buffer_s=100.0)
+    rig.start_continuous(fs, drive_block=block, buffer_s=BUFFER_S)
     blocks = [rig.read_block(200) for _ in range(6)]
     assert sim.ao_output_V() != 0.0 or np.allclose(block, 0)
     rig.stop()
@@ -83,7 +84,7 @@ def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
 
 
 def test_continuous_without_drive_reads_zero_volts(rig: DaqRig) -> None:
-    rig.start_continuous(100.0, buffer_s=100.0)
+    rig.start_continuous(100.0, buffer_s=BUFFER_S)
     a, b = rig.read_block(100), rig.read_block(100)
     rig.stop()
     assert b["t_s"][0] == pytest.approx(a["t_s"][-1] + 0.01)
@@ -139,7 +140,7 @@ def test_ao_returns_to_zero_after_error_mid_record(sim: SimDaq, fault: str, exc:
     ("disconnect", Disconnected),
 ])
 def test_each_fault_maps_to_its_exception(rig: DaqRig, sim: SimDaq, fault: str, exc: type) -> None:
-    rig.start_continuous(100.0, buffer_s=100.0)
+    rig.start_continuous(100.0, buffer_s=BUFFER_S)
     rig.read_block(10)
     sim.inject(fault)
     with pytest.raises(exc) as info:
@@ -208,11 +209,11 @@ def test_replay_mismatch_names_the_call(sim: SimDaq) -> None:
 def test_replay_of_a_continuous_run(sim: SimDaq) -> None:
     tr = Transcript()
     with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
-        rig.start_continuous(100.0, buffer_s=100.0)
+        rig.start_continuous(100.0, buffer_s=BUFFER_S)
         live = [rig.read_block(50), rig.read_block(50)]
         rig.stop()
     with DaqRig.from_replay(tr, "daq") as rig:
-        rig.start_continuous(100.0, buffer_s=100.0)
+        rig.start_continuous(100.0, buffer_s=BUFFER_S)
         again = [rig.read_block(50), rig.read_block(50)]
         with pytest.raises(ReplayMismatch, match="read_block"):
             rig.read_block(60)
