@@ -30,14 +30,14 @@ class Seed001Settings(Strict):
     sine_cycles: float = Field(3.0, gt=0)
     step_amplitudes_V: list[float] = Field(default=[0.5, 1.0, 1.5, 2.0], min_length=2)
     step_on_s: float = Field(5.0, gt=0)
-    step_off_s: float = Field(4.0, ge=0)
+    step_off_s: float = Field(10.0, ge=0)
     multisine_rms_V: float = Field(0.45, gt=0)
     multisine_f_min_Hz: float = Field(0.2, gt=0)
     multisine_f_max_Hz: float = Field(60.0, gt=0)
     multisine_period_s: float = Field(10.0, gt=0)
     multisine_realisations: int = Field(2, ge=1)
     heldout_amplitude_V: float | None = 1.5  # sines and steps of this amplitude are held out (None: none)
-    rest_s: float = Field(5.0, ge=0)  # at 0 V between records: each starts from rest
+    rest_s: float = Field(30.0, ge=0)  # at 0 V between records: the slow tail (minutes in the CPE) mostly gone
 
     @model_validator(mode="after")
     def _check(self):
