@@ -127,9 +127,11 @@ def summarise(fit: HammersteinFit, data: Seed001Data, spread: dict[str, float | 
         "estimates": {k: clean(v) for k, v in fit.params.items()},  # what the optimiser stopped at, undetermined or not
         "stderr": {k: None if k in und else clean(v) for k, v in fit.stderr.items()},
         "spread": {k: clean(v) for k, v in (spread or {}).items()},
-        # the stated uncertainty: standard error and spread over runs together (what a recovery must stay within)
-        "uncertainty": {k: None if k in und else clean(math.hypot(fit.stderr.get(k, math.nan), (spread or {}).get(k) or 0.0))
-                        for k in fit.params},
+        "resolution": {k: clean(v) for k, v in fit.resolution.items()},
+        # the stated uncertainty: the data's standard error, the spread over runs and how tightly the optimiser
+        # pinned its answer, together (what a recovery must stay within)
+        "uncertainty": {k: None if k in und else clean(math.hypot(fit.stderr.get(k, math.nan), (spread or {}).get(k) or 0.0,
+                                                                   fit.resolution.get(k, 0.0))) for k in fit.params},
         "undetermined": und,
         "nrmse_current": clean(fit.objectives.get("current")),
         "nrmse_displacement": clean(fit.objectives.get("displacement")),

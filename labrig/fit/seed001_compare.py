@@ -112,6 +112,24 @@ def noise_level(data: Seed001Data) -> dict[str, float | None]:
     return {k: (float(np.median(v)) if v else None) for k, v in out.items()}
 
 
+def with_gap(entries: list[dict[str, Any]], n_samples: int) -> None:
+    """Widen each method's stated uncertainty by its optimality gap. A method that stopped at an error F above the
+    best any method found, F_best, leaves a sum of squares (F^2 - F_best^2) n unexplained by noise; the parameters
+    that move the sum of squares by that much lie within sqrt(gap * n) standard errors, gap = 1 - (F_best / F)^2
+    (Gauss-Newton: stderr^2 = s^2 [(J^T J)^-1]_kk with s^2 = F^2 n / dof, and dof ~ n). Electric parameters take the
+    current's gap, mechanical ones the displacement's (the sequential split)."""
+    best = {k: min((e[f"nrmse_{k}"] for e in entries if e[f"nrmse_{k}"] is not None), default=None) for k in ("current", "displacement")}
+    electric = set(hm.ELECTRIC_BASE) | {x for law in hm.LAWS.values() for x in law.extra}
+    for e in entries:
+        gap = {k: (max(0.0, 1.0 - (best[k] / e[f"nrmse_{k}"]) ** 2) if best[k] and e[f"nrmse_{k}"] else 0.0) for k in best}
+        e["optimality_gap"] = gap
+        for n, u in e["uncertainty"].items():
+            se = e["stderr"].get(n)
+            if u is not None and se is not None:
+                g = gap["current" if n in electric else "displacement"]
+                e["uncertainty"][n] = float(np.hypot(u, se * np.sqrt(g * n_samples)))
+
+
 def compare(data: Seed001Data, law: str = "poly", budget: str | Budget = "standard", executor: Any = "auto",
             methods: tuple[str, ...] = tuple(METHODS)) -> dict[str, Any]:
     """Every method on ``data.fit``, scored on ``data.fit`` and ``data.heldout`` (DESIGN.md 6 JSON)."""
@@ -135,6 +153,7 @@ def compare(data: Seed001Data, law: str = "poly", budget: str | Budget = "standa
         laws[name] = {"V": grid.tolist(), "I": hm.static_current(p, grid).tolist(),
                       "at_measured": hm.static_current(p, np.asarray(trend["V"])).tolist()}
         entries.append(e)
+    with_gap(entries, sum(len(r.v) for r in data.fit))
     return {
         "law": law,
         "budget": budget if isinstance(budget, str) else "custom",
