@@ -148,13 +148,15 @@ def fit_seed001(sd: SessionData, method: str = "nelder-mead", law: str = "poly",
     """Identify the Hammerstein model with one method, or with ``method="all"`` compare Nelder-Mead (several starts),
     GA and NSGA-II (several seeds) on the same records (labrig.fit.seed001_compare). None when the session has
     no records that can tell it."""
+    if method == "all":
+        from labrig.fit.seed001_compare import BUDGETS, compare
+
+        b = BUDGETS[budget]
+        data = prepare(sd, force, b.max_rate_Hz, b.max_s)
+        return None if data is None else compare(data, law, budget=budget, executor=executor)
     data = prepare(sd, force, max_rate_Hz, max_s)
     if data is None:
         return None
-    if method == "all":
-        from labrig.fit.seed001_compare import compare
-
-        return compare(data, law, budget=budget, executor=executor)
     if method == "nsga2":
         fit = fit_nsga2(data.fit, law=law, pop_size=40, n_gen=40, executor=executor)
     else:

@@ -32,9 +32,12 @@ class Budget:
     nsga_seeds: int = 2
     nsga_pop: int = 60
     nsga_gen: int = 50
+    max_rate_Hz: float = 250.0  # records decimated to at most this rate ...
+    max_s: float = 8.0  # ... and cut to this length (labrig.fit.seed001.prepare)
 
 
-BUDGETS = {"standard": Budget(), "quick": Budget(2, 150, 2, 16, 8, 2, 24, 12)}
+# quick: a smoke test of the whole path (seconds), not an identification to trust
+BUDGETS = {"standard": Budget(), "quick": Budget(2, 120, 2, 16, 8, 2, 24, 12, max_rate_Hz=125.0, max_s=4.0)}
 
 
 def nelder_mead_runs(records: list, law: str, b: Budget, executor: Any = "auto") -> list[HammersteinFit]:
