@@ -28,21 +28,7 @@ TRUTH = presets.get("seed001").hammerstein  # what `labrig model response --mode
 # every third record from the second (step, ms1) is held out (labrig.fit.seed001.split)
 DRIVES = [("harmonic", 2.0, "sine2"), ("step", 1.5, "step"), ("multisine", 0.8, "ms2"), ("harmonic", 1.0, "sine1"), ("multisine", 0.4, "ms1")]
 BUDGET = Budget(nm_starts=2, nm_maxfev=300, ga_seeds=2, ga_pop=50, ga_gen=60, nsga_seeds=2, nsga_pop=60, nsga_gen=80)
-SMALL_SEED001 = """protocol = "seed001"
-pressure_kPa = 1000.0
-[clamp]
-pressures_kPa = [1000.0]
-settle_s = 2.0
-[seed001]
-sine_amplitudes_V = [0.5, 1.0, 2.0]
-sine_cycles = 2.0
-step_amplitudes_V = [1.0, 2.0]
-step_on_s = 3.0
-step_off_s = 2.0
-multisine_period_s = 5.0
-heldout_amplitude_V = 1.0
-rest_s = 5.0
-"""
+SMALL_SEED001 = Path(__file__).parents[1] / "bench" / "seed001_small.toml"  # the seed001 protocol cut short
 
 
 def model_session(tmp: Path, drives=DRIVES, noise: float = 0.002) -> Path:
@@ -125,10 +111,9 @@ def test_bundled_protocols_refuse_the_seed001_strip_with_one_line(tmp_path, caps
 def seed001_session(tmp_path_factory):
     """The seed001 protocol (cut short) on the seed-001 strip in the simulated bench."""
     d = tmp_path_factory.mktemp("seed001")
-    (d / "small.toml").write_text(SMALL_SEED001)
     for attempt in range(2):  # an overloaded machine can make the scaled-clock bench fault: rerun once
         path = d / f"s{attempt}.h5"
-        if execute(RunRequest(str(d / "small.toml"), path, preset="seed001")).exit_code == 0:
+        if execute(RunRequest(str(SMALL_SEED001), path, preset="seed001")).exit_code == 0:
             return path
     pytest.fail("the seed001 protocol did not run on the simulated bench")
 
