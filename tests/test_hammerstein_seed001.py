@@ -94,7 +94,7 @@ def test_slow_sines_alone_leave_the_mode_undetermined(tmp_path):
 
     path = model_session(tmp_path, [("harmonic", 2.0, "a"), ("harmonic", 1.0, "b")], noise=0.02)
     data = prepare(load_session(path), force=True)
-    out = summarise(fit_sequential(data.fit, "nelder-mead", maxfev=300), data)
+    out = summarise(fit_sequential(data.fit, "nelder-mead", maxfev=200), data)
     assert out["params"]["wn"] is None and out["params"]["zeta"] is None
     assert "wn" in out["undetermined"] and out["estimates"]["wn"] is not None
     assert out["params"]["R_s"] is not None and out["params"]["C_dl"] is not None  # the electric stage is told
@@ -200,6 +200,20 @@ def test_fit_batch_on_the_cluster_loses_no_session_when_a_worker_dies(cluster, s
     client.wait_for_workers(2, timeout=60)  # the nanny restarted the killed one
     # a session that is not there is refused before anything is sent (one line, exit 2)
     assert main(["fit", paths[0], str(tmp_path / "missing.h5"), "--scheduler", lc.scheduler_address]) == 2
+
+
+def test_diagnose_batch_on_the_cluster_gives_one_answer_per_session(cluster, seed001_session, tmp_path, capsys):
+    """A file that is not a session is that session's error line (exit 2); the other is diagnosed and stored."""
+    lc, _ = cluster
+    good, bad = _copies(seed001_session, tmp_path, 1)[0], tmp_path / "bad.h5"
+    bad.write_text("not a session")
+    rc = main(["diagnose", good, str(bad), "--json", "--scheduler", lc.scheduler_address])
+    cap = capsys.readouterr()
+    out = json.loads(cap.out)["sessions"]
+    assert rc == 2 and [s["path"] for s in out] == [good, str(bad)]
+    assert out[0]["error"] is None and out[0]["result"]["verdict"] in ("effect", "none", "unexplained")
+    assert out[1]["result"] is None and "not an HDF5 file" in out[1]["error"] and "bad.h5: not an HDF5 file" in cap.err
+    assert json.loads(SessionFile(good).read_analysis("diagnosis")["result_json"])["verdict"] == out[0]["result"]["verdict"]
 
 
 def test_population_evaluations_on_the_cluster_match_in_process(cluster):
