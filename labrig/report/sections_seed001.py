@@ -36,36 +36,41 @@ def nonlinearity_figure(s: dict[str, Any]) -> Figure | None:
     return fig
 
 
-def heldout_figure(s: dict[str, Any], sd: Any) -> Figure | None:
-    """The first held-out record: measured current and displacement against each method's model (its estimates,
-    simulated from rest on the record's drive, at the fitting rate)."""
+def heldout_figure(s: dict[str, Any], sd: Any, most: int = 3) -> Figure | None:
+    """The held-out records (up to ``most``), one column each: measured current and displacement against each
+    method's model (its estimates, simulated from rest on the record's drive, at the fitting rate), with each
+    method's NRMSE on that record."""
     from labrig.fit.seed001 import to_record
     from labrig.physics import hammerstein as hm
     from labrig.physics.params import HammersteinParams
 
-    names = s.get("heldout_records") or []
     recs = {r.name: r for r in sd.all_records()} if sd is not None else {}
-    if not names or names[0] not in recs:
+    names = [n for n in (s.get("heldout_records") or []) if n in recs][:most]
+    if not names:
         return None
-    r = to_record(recs[names[0]])
-    t = np.arange(r.v.size) / r.fs
-    fig = Figure(figsize=(8.0, 5.5), layout="constrained")
-    ax_i, ax_d = fig.subplots(2, 1, sharex=True)
-    ax_i.plot(t, r.i * 1e3, "k-", lw=1.5, label="measured (held out)")
-    ax_d.plot(t, r.delta * 1e3, "k-", lw=1.5)
-    for k, m in enumerate(s.get("methods") or []):
-        est = {n: v for n, v in (m.get("estimates") or {}).items() if v is not None}
-        p = HammersteinParams(law=s.get("law", "poly")).with_vector(tuple(est), tuple(est.values()))
-        i, d = hm.simulate(p, r.v, r.fs)
-        ax_i.plot(t, i * 1e3, "--", color=f"C{k}", lw=1, label=f"{m['method']} (NRMSE {h.fmt(m.get('heldout_nrmse_current'), 3)})")
-        ax_d.plot(t, d * 1e3, "--", color=f"C{k}", lw=1, label=f"{m['method']} (NRMSE {h.fmt(m.get('heldout_nrmse_displacement'), 3)})")
-    ax_i.set_ylabel("current (mA)")
-    ax_d.set_ylabel("displacement (mm)")
-    ax_d.set_xlabel("time (s)")
-    for ax in (ax_i, ax_d):
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle(f"Held-out record {names[0]} against each method's model")
+    fig = Figure(figsize=(4.0 * len(names) + 1.0, 5.5), layout="constrained")
+    axes = np.atleast_2d(fig.subplots(2, len(names), squeeze=False))
+    nrmse = lambda sim, meas: np.sqrt(np.mean((sim - meas) ** 2) / max(np.mean(meas**2), 1e-300))  # noqa: E731
+    for c, name in enumerate(names):
+        r = to_record(recs[name])
+        t = np.arange(r.v.size) / r.fs
+        ax_i, ax_d = axes[0, c], axes[1, c]
+        ax_i.plot(t, r.i * 1e3, "k-", lw=1.5, label="measured")
+        ax_d.plot(t, r.delta * 1e3, "k-", lw=1.5, label="measured")
+        for k, m in enumerate(s.get("methods") or []):
+            est = {n: v for n, v in (m.get("estimates") or {}).items() if v is not None}
+            p = HammersteinParams(law=s.get("law", "poly")).with_vector(tuple(est), tuple(est.values()))
+            i, d = hm.simulate(p, r.v, r.fs)
+            ax_i.plot(t, i * 1e3, "--", color=f"C{k}", lw=1, label=f"{m['method']} ({nrmse(i, r.i):.3f})")
+            ax_d.plot(t, d * 1e3, "--", color=f"C{k}", lw=1, label=f"{m['method']} ({nrmse(d, r.delta):.3f})")
+        ax_i.set_title(name, fontsize=9)
+        ax_d.set_xlabel("time (s)")
+        for ax in (ax_i, ax_d):
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=7, title="NRMSE on this record", title_fontsize=7)
+    axes[0, 0].set_ylabel("current (mA)")
+    axes[1, 0].set_ylabel("displacement (mm)")
+    fig.suptitle("Held-out records (never fitted) against each method's model")
     return fig
 
 
@@ -96,7 +101,7 @@ def section(data: ReportData) -> str:
     for name, fig, caption in (
         ("seed001-front", fd.pareto_figure(s), "NSGA-II non-dominated set over (current error, displacement error), all seeds merged; the star is the knee."),
         ("seed001-nonlinearity", nonlinearity_figure(s), "Measured steady current at the end of each step against each method's static I-V law."),
-        ("seed001-heldout", heldout_figure(s, data.sd), "A held-out record (never fitted): measured current and displacement against each method's model."),
+        ("seed001-heldout", heldout_figure(s, data.sd), "The held-out records (never fitted): measured current and displacement against each method's model."),
     ):
         body += h.figure(fig, name, caption) if fig is not None else h.missing(f"{name}: nothing to draw in this identification.")
     return h.section(TITLE, body, "seed001")
