@@ -107,6 +107,15 @@ def test_bundled_protocols_refuse_the_seed001_strip_with_one_line(tmp_path, caps
     assert not (tmp_path / "x.h5").exists()  # refused before anything moved
 
 
+# -- scale-out: one LocalCluster with two worker processes for the module ------------------------------------------
+@pytest.fixture(scope="module")
+def cluster():
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as lc, \
+            distributed.Client(lc) as client:
+        yield lc, client
+
+
 @pytest.fixture(scope="module")
 def seed001_session(tmp_path_factory):
     """The seed001 protocol (cut short) on the seed-001 strip in the simulated bench."""
@@ -118,13 +127,15 @@ def seed001_session(tmp_path_factory):
     pytest.fail("the seed001 protocol did not run on the simulated bench")
 
 
-def test_seed001_protocol_runs_and_all_methods_report_per_the_contract(seed001_session, tmp_path, capsys):
+def test_seed001_protocol_runs_and_all_methods_report_per_the_contract(seed001_session, cluster, tmp_path, capsys):
+    """The seed001 protocol's session, `labrig fit --seed001-method all --scheduler` (one session: GA / NSGA-II
+    populations and the Nelder-Mead starts on the cluster), the JSON contract, storage and the report section."""
     path = tmp_path / "s.h5"
     shutil.copy(seed001_session, path)
     sd = load_session(path)
     kinds = sorted({r.kind for r in sd.all_records()})
     assert kinds == ["harmonic", "multisine", "step"] and all(abs(r.fs - 3000) < 1e-6 for r in sd.all_records())
-    assert main(["fit", str(path), "--seed001-method", "all", "--seed001-budget", "quick", "--json"]) == 0
+    assert main(["fit", str(path), "--seed001-method", "all", "--seed001-budget", "quick", "--json", "--scheduler", cluster[0].scheduler_address]) == 0
     out = json.loads(capsys.readouterr().out)["seed001"]
     assert out["heldout_records"] == ["harmonic_0.5Hz_1V", "step_1V", "multisine_r1"]
     for m in out["methods"]:
@@ -145,15 +156,6 @@ def test_seed001_protocol_runs_and_all_methods_report_per_the_contract(seed001_s
     for fig in ("seed001-front", "seed001-nonlinearity", "seed001-heldout"):
         assert f'data-figure="{fig}"' in html, fig
     assert 'data-key="seed001.methods.ga.heldout_nrmse_current"' in html
-
-
-# -- scale-out: one LocalCluster with two worker processes for the module ------------------------------------------
-@pytest.fixture(scope="module")
-def cluster():
-    distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as lc, \
-            distributed.Client(lc) as client:
-        yield lc, client
 
 
 def _copies(src: Path, tmp: Path, n: int) -> list[str]:

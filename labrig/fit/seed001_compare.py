@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from labrig.fit.executors import is_dask_client
 from labrig.fit.hammerstein import HammersteinFit, fit_nsga2, fit_sequential, from_unit, knee_point
 from labrig.fit.seed001 import Seed001Data, clean, summarise
 from labrig.physics import hammerstein as hm
@@ -41,11 +42,15 @@ BUDGETS = {"standard": Budget(), "quick": Budget(2, 120, 2, 16, 8, 2, 24, 12, ma
 
 
 def nelder_mead_runs(records: list, law: str, b: Budget, executor: Any = "auto") -> list[HammersteinFit]:
-    """Start 0 is the default parameters; the others are drawn uniformly from the middle of the search box."""
+    """Start 0 is the default parameters; the others are drawn uniformly from the middle of the search box. Given a
+    dask client, each start is a task on the cluster."""
     names = hm.param_names(law)
     rng = np.random.default_rng(0)
     starts = [HammersteinParams(law=law)] + [HammersteinParams(law=law).with_vector(names, from_unit(rng.uniform(0.2, 0.8, len(names)), names))
                                              for _ in range(b.nm_starts - 1)]
+    if is_dask_client(executor):  # Nelder-Mead is sequential: on a cluster its starts are the parallel tasks
+        futures = [executor.submit(fit_sequential, records, "nelder-mead", law, x0=x0, maxfev=b.nm_maxfev, pure=False) for x0 in starts]
+        return executor.gather(futures)
     return [fit_sequential(records, "nelder-mead", law, x0=x0, maxfev=b.nm_maxfev) for x0 in starts]
 
 
