@@ -48,6 +48,14 @@ def population_speedup(workers: list[int]) -> None:
         print(f"{n:8d} {t:13.2f} {base / t:9.2f}")
 
 
+def _warm_up() -> None:
+    import labrig.cli.analysis_cmds  # noqa: F401
+    import labrig.diagnose.engine  # noqa: F401
+    import labrig.fit.seed000  # noqa: F401
+    import labrig.fit.seed001  # noqa: F401
+    import pymoo.algorithms.moo.nsga2  # noqa: F401
+
+
 def batch_vs_one_by_one(n_sessions: int, workers: int) -> None:
     from distributed import Client, LocalCluster
 
@@ -64,10 +72,12 @@ def batch_vs_one_by_one(n_sessions: int, workers: int) -> None:
         shutil.copy(src, tmp / f"c{k}.h5")
         paths.append(str(tmp / f"c{k}.h5"))
     kw = {"seed001": "on", "seed001_method": "nsga2"}
+    _warm_up()
     t0 = time.perf_counter()
     local = run_batch(compute_fit, paths, None, **kw)
     t_local = time.perf_counter() - t0
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as lc, Client(lc) as client:
+        client.run(_warm_up)  # a worker's first task would otherwise pay the imports (scipy, pymoo, h5py: seconds)
         t0 = time.perf_counter()
         remote = run_batch(compute_fit, paths, client, **kw)
         t_batch = time.perf_counter() - t0
