@@ -114,9 +114,8 @@ def _seed001_summary(h: dict[str, Any]) -> None:
         click.echo(f"  {m['method']:12s} {_g(m['nrmse_current']):>8} {_g(m['nrmse_displacement']):>8} {_g(m.get('heldout_nrmse_current')):>8} "
                    f"{_g(m.get('heldout_nrmse_displacement')):>8} {m['n_evals']:7d} {m['wall_s']:7.1f}")
     for m in methods:
-        spread = m.get("spread") or {}
-        vals = [f"{k} = {v:.4g}" + (f" (spread {spread[k]:.2g})" if spread.get(k) is not None else "")
-                for k, v in m["params"].items() if v is not None]
+        u = m.get("uncertainty") or m.get("stderr") or {}
+        vals = [f"{k} = {v:.4g}" + (f" ± {u[k]:.2g}" if u.get(k) is not None else "") for k, v in m["params"].items() if v is not None]
         click.echo(f"  {m['method']}: " + ", ".join(vals))
         for k, why in (m.get("undetermined") or {}).items():
             click.echo(f"    {k}: undetermined ({why})")
