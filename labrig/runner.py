@@ -48,8 +48,11 @@ def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:
                 raise BadInput(f"{source}: step {s.name}: drive {peak:.3g} V exceeds the rig's safety.max_drive_V = {lim.max_drive_V:g} V")
             if not np.all(np.isfinite(a.drive_V)) or a.fs_Hz <= 0:
                 raise BadInput(f"{source}: step {s.name}: drive is not finite or fs_Hz <= 0")
-        elif isinstance(a, SetClamp) and a.force_N > lim.max_force_N:
-            raise BadInput(f"{source}: step {s.name}: clamp force {a.force_N:.3g} N exceeds the rig's safety.max_force_N = {lim.max_force_N:g} N")
+        elif isinstance(a, SetClamp) and a.force_N > lim.max_force_N:  # per strip: the force is pressure x its clamp area
+            area, strip = rig.clamp_area_m2, rig.config.sample.preset
+            raise BadInput(f"{source}: step {s.name}: clamp force {a.force_N:.3g} N on strip {strip!r} (clamp area {area * 1e6:.3g} mm^2) "
+                           f"exceeds the rig's safety.max_force_N = {lim.max_force_N:g} N: this strip allows at most "
+                           f"{lim.max_force_N / area / 1e3:.0f} kPa")
         elif isinstance(a, Impedance) and abs(a.ac_V) + abs(a.bias_V) > lim.max_drive_V:
             raise BadInput(f"{source}: step {s.name}: impedance drive exceeds safety.max_drive_V = {lim.max_drive_V:g} V")
         elif isinstance(a, Impedance) and (problem := out_of_range(rig.config.instruments.impedance.model, a.freqs_Hz)):

@@ -22,6 +22,7 @@ from pydantic import ValidationError
 from labrig.errors import BadInput, validation_error
 from protocols.config import Strict
 from protocols.paper_sweep import PaperSweep, paper_sweep
+from protocols.seed001 import Seed001Protocol, seed001_plan
 from protocols.single import (
     AmplitudeSeriesProtocol,
     EisProtocol,
@@ -43,6 +44,7 @@ PROTOCOLS: dict[str, tuple[type[Strict], PlanFn]] = {
     "step": (StepProtocol, single_plan),
     "harmonic": (HarmonicProtocol, single_plan),
     "amplitude-series": (AmplitudeSeriesProtocol, single_plan),
+    "seed001": (Seed001Protocol, seed001_plan),
 }
 
 

@@ -14,6 +14,11 @@ from labrig.errors import BadInput
 
 # labrig.physics.hammerstein.LAWS, spelled out: importing it here would load scipy for every command (test_hammerstein)
 SEED001_LAWS = ("poly", "butler_volmer", "varcap")
+SEED001_METHODS = ("nelder-mead", "ga", "nsga2", "all")
+SEED001_BUDGETS = ("standard", "quick")  # labrig.fit.seed001_compare.BUDGETS
+
+scheduler_option = click.option("--scheduler", metavar="ADDRESS", default=None,
+                                help="dask.distributed scheduler (or env DASK_SCHEDULER_ADDRESS): populations, or a batch of sessions, run there")
 
 
 def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
@@ -31,21 +36,26 @@ def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     return sd, fit_seed000(sd)
 
 
-def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
-            seed001_law: str = "poly") -> dict[str, Any]:
-    """Fit the seed-000 model (and seed 001's where the data allows) to a session; store the results under
-    /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
+def compute_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
+                seed001_law: str = "poly", seed001_budget: str = "standard", executor: Any = "auto") -> dict[str, Any]:
+    """The seed-000 fit of a session (and seed 001's where the data allows), written nowhere (a cluster task)."""
     from labrig.fit.seed001 import fit_seed001
-    from labrig.store import SessionFile
 
     sd, fit = fitted or load_and_fit(path)
     out = jsonable(fit.to_json())
     out["seed001"] = None
     if seed001 != "off":
-        h = fit_seed001(sd, method=seed001_method, law=seed001_law, force=seed001 == "on")
-        out["seed001"] = jsonable(h)
-        if h is not None:
-            SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(out["seed001"])})
+        out["seed001"] = jsonable(fit_seed001(sd, method=seed001_method, law=seed001_law, force=seed001 == "on",
+                                              executor=executor, budget=seed001_budget))
+    return out
+
+
+def store_fit(path: str | Path, out: dict[str, Any]) -> None:
+    """Write a fit into /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
+    from labrig.store import SessionFile
+
+    if out.get("seed001") is not None:
+        SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(out["seed001"])})
     rows = out["per_pressure"]
     SessionFile(path).write_analysis(
         "fit_seed000",
@@ -58,6 +68,13 @@ def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "neld
             "peak_disp_m": _arr(rows, "peak_disp_m"),
         },
     )
+
+
+def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
+            seed001_law: str = "poly", seed001_budget: str = "standard", executor: Any = "auto") -> dict[str, Any]:
+    """Fit the seed-000 model (and seed 001's where the data allows) to a session and store the results."""
+    out = compute_fit(path, seed001, seed001_method, fitted, seed001_law, seed001_budget, executor)
+    store_fit(path, out)
     return out
 
 
@@ -79,30 +96,103 @@ def _summary(out: dict[str, Any]) -> None:
     click.echo(f"optimum clamping pressure (largest measured step response): {out.get('optimum_pressure_kPa')} kPa")
     h = out.get("seed001")
     if h:
-        click.echo(f"seed 001 Hammerstein ({h['method']}, law {h['law']}): NRMSE current {h['nrmse_current']:.3g}, displacement {h['nrmse_displacement']:.3g}")
-        click.echo("  " + ", ".join(f"{k} = {v:.4g}" for k, v in h["params"].items() if v is not None))
+        _seed001_summary(h)
     for n in out.get("notes", []):
         click.echo(f"note: {n}")
 
 
+def _g(x: Any, fmt: str = ".3g") -> str:
+    return "-" if x is None else format(x, fmt)
+
+
+def _seed001_summary(h: dict[str, Any]) -> None:
+    methods = h.get("methods") or [h]
+    click.echo(f"seed 001 Hammerstein (law {h['law']}): fitted on {len(h.get('records') or [])} records, "
+               f"held out {', '.join(h.get('heldout_records') or []) or 'none'}")
+    click.echo(f"  {'method':12s} {'NRMSE i':>8} {'NRMSE d':>8} {'held i':>8} {'held d':>8} {'evals':>7} {'wall s':>7}")
+    for m in methods:
+        click.echo(f"  {m['method']:12s} {_g(m['nrmse_current']):>8} {_g(m['nrmse_displacement']):>8} {_g(m.get('heldout_nrmse_current')):>8} "
+                   f"{_g(m.get('heldout_nrmse_displacement')):>8} {m['n_evals']:7d} {m['wall_s']:7.1f}")
+    for m in methods:
+        u = m.get("uncertainty") or m.get("stderr") or {}
+        vals = [f"{k} = {v:.4g}" + (f" ± {u[k]:.2g}" if u.get(k) is not None else "") for k, v in m["params"].items() if v is not None]
+        click.echo(f"  {m['method']}: " + ", ".join(vals))
+        for k, why in (m.get("undetermined") or {}).items():
+            click.echo(f"    {k}: undetermined ({why})")
+    if h.get("noise_nrmse"):
+        n = h["noise_nrmse"]
+        click.echo(f"  noise floor as NRMSE: current {_g(n.get('current'))}, displacement {_g(n.get('displacement'))}")
+
+
+def print_outcomes(outcomes: list, as_json: bool, summary: Any) -> None:
+    """One session: its object as before. Several: {"sessions": [{"path", "result" | "error"}...]}."""
+    if as_json:
+        if len(outcomes) == 1 and outcomes[0].error is None:
+            print_json(outcomes[0].result)
+        elif len(outcomes) > 1:
+            print_json({"sessions": [{"path": o.path, "result": o.result, "error": o.error} for o in outcomes]})
+    else:
+        for o in outcomes:
+            if o.error is None:
+                if len(outcomes) > 1:
+                    click.echo(f"== {o.path}")
+                summary(o.result)
+    for o in outcomes:
+        if o.error is not None:
+            click.echo(f"labrig: error: {o.error}", err=True)
+
+
+def exit_code(outcomes: list) -> int:
+    """0 when every session has a result; 2 when a session was bad input; 1 when one failed otherwise."""
+    if all(o.error is None for o in outcomes):
+        return 0
+    return 2 if all(o.bad_input for o in outcomes if o.error is not None) else 1
+
+
+def batch(fn: Any, store: Any, sessions: tuple[str, ...], scheduler: str | None, populations: bool = False, **kwargs: Any) -> list:
+    """``fn(path, **kwargs)`` for every session, on the cluster if one is named, and ``store`` run here on each
+    result. With ``populations`` and a single session, the session runs here and its populations go to the cluster."""
+    from labrig.fit.cluster import connect, run_batch, scheduler_address
+
+    for s in sessions:
+        if not Path(s).exists():
+            raise BadInput(f"{s}: no such session file")
+    client = connect(scheduler_address(scheduler))
+    try:
+        if client is not None and populations and len(sessions) == 1:
+            outcomes = run_batch(fn, list(sessions), None, executor=client, **kwargs)
+        else:
+            outcomes = run_batch(fn, list(sessions), client, **kwargs)
+    finally:
+        if client is not None:
+            client.close()
+    for o in outcomes:
+        if o.error is None:
+            store(o.path, o.result)
+    return outcomes
+
+
 @click.command("fit")
-@click.argument("session", type=click.Path(dir_okay=False))
-@click.option("--json", "as_json", is_flag=True, help="print one JSON object")
+@click.argument("sessions", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object (several sessions: {\"sessions\": [...]})")
 @click.option("--seed001", type=click.Choice(["auto", "on", "off"]), default="auto", show_default=True,
               help="seed 001's Hammerstein model: auto = when the session has an amplitude series or multisines")
-@click.option("--seed001-method", type=click.Choice(["nelder-mead", "ga", "nsga2"]), default="nelder-mead", show_default=True)
+@click.option("--seed001-method", type=click.Choice(SEED001_METHODS), default="nelder-mead", show_default=True,
+              help="all = Nelder-Mead (several starts), GA and NSGA-II (several seeds) compared on the same records")
 @click.option("--seed001-law", type=click.Choice(SEED001_LAWS), default="poly", show_default=True,
               help="the electric stage's nonlinear law (docs/hammerstein.md)")
-def fit_cmd(session: str, as_json: bool, seed001: str, seed001_method: str, seed001_law: str) -> None:
-    """Fit the paper's model (seed 000) to SESSION, and seed 001's where the data allows; results go into
-    /entry/analysis/."""
-    if not Path(session).exists():
-        raise BadInput(f"{session}: no such session file")
-    out = run_fit(session, seed001, seed001_method, seed001_law=seed001_law)
-    if as_json:
-        print_json(out)
-    else:
-        _summary(out)
+@click.option("--seed001-budget", type=click.Choice(SEED001_BUDGETS), default="standard", show_default=True,
+              help="starts, seeds, populations and generations of --seed001-method all (quick: a smoke test)")
+@scheduler_option
+def fit_cmd(sessions: tuple[str, ...], as_json: bool, seed001: str, seed001_method: str, seed001_law: str, seed001_budget: str,
+            scheduler: str | None) -> None:
+    """Fit the paper's model (seed 000) to each SESSION, and seed 001's where the data allows; results go into
+    /entry/analysis/ of each session."""
+    outcomes = batch(compute_fit, store_fit, sessions, scheduler, populations=True, seed001=seed001, seed001_method=seed001_method,
+                     seed001_law=seed001_law, seed001_budget=seed001_budget)
+    print_outcomes(outcomes, as_json, _summary)
+    if exit_code(outcomes):
+        raise click.exceptions.Exit(exit_code(outcomes))
 
 
 def after_run(path: Path, fit: bool, diagnose: bool, quiet: bool) -> None:

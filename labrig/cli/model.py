@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import click
 import numpy as np
 
@@ -9,7 +11,7 @@ from labrig import signals
 from labrig.cli.common import MultiValueOption, print_json, write_csv
 from labrig.errors import BadInput
 from labrig.physics import impedance as imp
-from labrig.physics import presets, timeresp, transfer
+from labrig.physics import hammerstein, presets, timeresp, transfer
 from labrig.physics.params import Specimen
 
 _preset = click.option("--preset", default="paper", show_default=True, help=f"one of: {', '.join(presets.names())}")
@@ -126,9 +128,18 @@ def frf_cmd(preset: str, pressure_kPa: float | None, fmin: float, fmax: float, p
 @click.option("--fs", default=1000.0, show_default=True, type=float, help="sample rate, Hz")
 @click.option("--seed", default=0, show_default=True, type=int, help="multisine phases")
 @click.option("--out", required=True, type=click.Path(dir_okay=False), help="CSV: t_s, v_V, i_A, disp_m")
-def response_cmd(preset, pressure_kPa, kind, amplitude_V, frequency_Hz, fmin, fmax, duration_s, fs, seed, out) -> None:
+@click.option("--model", "which", type=click.Choice(["seed000", "hammerstein"]), default="seed000", show_default=True,
+              help="seed 000's distributed model, or seed 001's Hammerstein grey box (the preset's parameters)")
+@click.option("--law", type=click.Choice(sorted(hammerstein.LAWS)), default=None, help="hammerstein: the electric law (default: the preset's)")
+@click.option("--noise", "noise_rel", default=0.0, show_default=True, type=float,
+              help="white noise added to current and displacement, as a fraction of each one's std (seeded by --seed)")
+def response_cmd(preset, pressure_kPa, kind, amplitude_V, frequency_Hz, fmin, fmax, duration_s, fs, seed, out, which, law, noise_rel) -> None:
     """Time response (current and tip displacement) to a step, sine, sweep or multisine, to CSV."""
     sp = _specimen(preset, pressure_kPa)
+    if not noise_rel >= 0:
+        raise BadInput(f"--noise: must be >= 0, got {noise_rel}")
+    if which != "hammerstein" and law is not None:
+        raise BadInput("--law applies to --model hammerstein")
     if not (duration_s > 0 and fs > 0):
         raise BadInput("--duration and --fs must be positive")
     if kind == "step":
@@ -140,7 +151,14 @@ def response_cmd(preset, pressure_kPa, kind, amplitude_V, frequency_Hz, fmin, fm
     else:
         ms = signals.odd_multisine(amplitude_V, fmin, fmax, duration_s, fs, np.random.default_rng(seed))
         v = ms.period_V
-    disp, cur = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], v, fs)
+    if which == "hammerstein":  # seed 001's grey box, from rest (labrig.physics.hammerstein)
+        hp = presets.get(preset).hammerstein
+        cur, disp = hammerstein.simulate(replace(hp, law=law) if law else hp, v, fs)
+    else:
+        disp, cur = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], v, fs)
+    if noise_rel > 0:
+        rng = np.random.default_rng([seed, 1])
+        cur, disp = (x + noise_rel * x.std() * rng.standard_normal(x.size) for x in (cur, disp))
     write_csv(out, ["t_s", "v_V", "i_A", "disp_m"], [np.arange(v.size) / fs, v, cur, disp])
     click.echo(f"wrote {v.size} samples ({kind}, {duration_s:g} s at {fs:g} Hz) to {out}; peak |disp| = {np.abs(disp).max() * 1e3:.3f} mm")
 

@@ -39,7 +39,7 @@ def _run(fn: Callable, X: np.ndarray, *args: Any) -> np.ndarray:
     return fn(X, *args)
 
 
-def _is_dask_client(obj: Any) -> bool:
+def is_dask_client(obj: Any) -> bool:
     return all(hasattr(obj, a) for a in ("scatter", "gather", "map", "scheduler_info"))
 
 
@@ -92,7 +92,7 @@ class PopulationMap:
             chunks = self._chunks(X, self.n_workers)
             pool = self._local_pool()
             parts = list(pool.map(_run_installed, [self.fn] * len(chunks), [id(self)] * len(chunks), chunks))
-        elif _is_dask_client(ex):
+        elif is_dask_client(ex):
             if self._scattered is None:  # ship the data once; later calls pass futures
                 self._scattered = [ex.scatter(a, broadcast=True) for a in self.args]
             n = sum(w.get("nthreads", 1) for w in ex.scheduler_info()["workers"].values()) or 1

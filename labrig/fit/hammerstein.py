@@ -224,6 +224,7 @@ class HammersteinFit:
     front_names: tuple[str, ...] = ()
     knee: int | None = None  # index of the chosen point in the front
     stages: dict[str, Any] = field(default_factory=dict)
+    resolution: dict[str, float] = field(default_factory=dict)  # how tightly the optimiser pinned each (_resolution)
 
     def to_params(self) -> HammersteinParams:
         return HammersteinParams(law=self.law).with_vector(tuple(self.params), tuple(self.params.values()))
@@ -271,7 +272,13 @@ def _nelder_mead(spec: Spec, x0: np.ndarray, maxfev: int, step: float) -> tuple[
     simplex = np.vstack([u0, u0 + step * np.eye(len(u0))])
     res = optimize.minimize(f, u0, method="Nelder-Mead",
                             options={"maxfev": maxfev, "xatol": 1e-7, "fatol": 1e-10, "initial_simplex": simplex})
-    return from_unit(expit(res.x), spec.free), int(res.nfev)
+    return from_unit(expit(res.x), spec.free), int(res.nfev), _resolution(from_unit(expit(res.final_simplex[0]), spec.free))
+
+
+def _resolution(X: np.ndarray) -> np.ndarray:
+    """How tightly an optimiser pinned its answer: the standard deviation of each parameter over the points it ended
+    with (Nelder-Mead's final simplex, the best quarter of a GA's final population, the knee's neighbours on a front)."""
+    return np.std(np.atleast_2d(X), axis=0, ddof=1) if len(np.atleast_2d(X)) > 1 else np.zeros(np.shape(X)[-1])
 
 
 def _pymoo_problem(fmap: PopulationMap, n_var: int, n_obj: int, names: tuple[str, ...]):
@@ -295,7 +302,9 @@ def _ga(spec: Spec, pop_size: int, n_gen: int, seed: int, executor) -> tuple[np.
         problem = _pymoo_problem(fmap, len(spec.free), 1, spec.free)
         res = minimize(problem, GA(pop_size=pop_size, eliminate_duplicates=True), ("n_gen", n_gen), seed=seed,
                        verbose=False)
-        return from_unit(np.atleast_2d(res.X)[0], spec.free), fmap.n_evals
+        Z, F = res.pop.get("X"), res.pop.get("F")[:, 0]
+        top = Z[np.argsort(F)[: max(2, len(Z) // 4)]]
+        return from_unit(np.atleast_2d(res.X)[0], spec.free), fmap.n_evals, _resolution(from_unit(top, spec.free))
 
 
 def fit_sequential(records: list, method: Literal["nelder-mead", "ga"] = "nelder-mead", law: str = "poly", *,
@@ -309,19 +318,20 @@ def fit_sequential(records: list, method: Literal["nelder-mead", "ga"] = "nelder
     p = x0 if x0 is not None else HammersteinParams(law=law)
     if p.law != law:
         p = HammersteinParams(law=law).with_vector(hm.MECH_NAMES, p.vector(hm.MECH_NAMES))
-    groups, n_evals, stages = pack(records, skip_s), 0, {}
+    groups, n_evals, stages, resolution = pack(records, skip_s), 0, {}, {}
     for stage in ("electric", "mechanical"):
         i_fixed = _fixed_current(groups, law, p) if stage == "mechanical" else None
         spec = _spec(groups, law, p, stage, i_fixed)
         if method == "nelder-mead":
-            x, n = _nelder_mead(spec, p.vector(spec.free), maxfev, step)
+            x, n, res = _nelder_mead(spec, p.vector(spec.free), maxfev, step)
         elif method == "ga":
-            x, n = _ga(spec, pop_size, n_gen, seed, executor)
+            x, n, res = _ga(spec, pop_size, n_gen, seed, executor)
         else:
             raise ValueError(f"unknown method {method!r}")
         p, n_evals = p.with_vector(spec.free, x), n_evals + n
+        resolution.update(zip(spec.free, map(float, res)))
         stages[stage] = {"n_evals": n, spec.objectives[0]: float(evaluate_chunk(x[None], spec)[0, 0])}
-    return _finish(method, law, p, groups, n_evals, t0, with_stderr, stages=stages)
+    return _finish(method, law, p, groups, n_evals, t0, with_stderr, stages=stages, resolution=resolution)
 
 
 def fit_nelder_mead(records: list, law: str = "poly", **kw) -> HammersteinFit:
@@ -352,8 +362,9 @@ def fit_nsga2(records: list, law: str = "poly", *, pop_size: int = 100, n_gen: i
     F, X = F[order], X[order]
     k = knee_point(F)
     p = HammersteinParams(law=law).with_vector(spec.free, X[k])
+    res = _resolution(X[max(0, k - 1):k + 2])
     return _finish("nsga2", law, p, groups, n_evals, t0, with_stderr, front_F=F, front_X=X,
-                   front_names=spec.free, knee=k)
+                   front_names=spec.free, knee=k, resolution=dict(zip(spec.free, map(float, res))))
 
 
 def identify(records: list, method: str = "nelder-mead", law: str = "poly", **kw) -> HammersteinFit:

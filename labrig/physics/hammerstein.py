@@ -251,3 +251,21 @@ def simulate_reference(params: HammersteinParams, v: np.ndarray, fs: float, rtol
     num, den = mech_tf(params.K, params.eps, params.wn, params.zeta)
     _, d, _ = signal.lsim((num, den), i, t)
     return i, d
+
+
+def static_current(params: HammersteinParams, V: np.ndarray, iters: int = 80) -> np.ndarray:
+    """The electric stage's static (DC) I-V law: the steady current once the double layer has charged.
+
+    At DC dv/dt = 0, so i = (V - v)/R_s = i_nl(v): solve V = v + R_s i_nl(v) for v (bisection on
+    [-|V|, |V|]; the left side is increasing in v for every law with g1, g3, i0 >= 0) and return i_nl(v).
+    This is the curve seed 001's Fig. 1 measures ("experimental nonlinearity trend"); C(v) plays no part.
+    """
+    V = np.asarray(V, float)
+    law = LAWS[params.law]
+    c = {n: np.asarray(getattr(params, n)) for n in electric_names(params.law)}
+    lo, hi = -np.abs(V), np.abs(V)
+    for _ in range(iters):
+        mid = 0.5 * (lo + hi)
+        above = mid + params.R_s * law.i_nl(mid, c) > V
+        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
+    return law.i_nl(0.5 * (lo + hi), c)

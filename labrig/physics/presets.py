@@ -19,6 +19,9 @@ from labrig.physics.params import (
 )
 
 PAPER_PRESSURES_KPA = (612.0, 1837.0, 3062.0, 4287.0)
+# Seed 001 gives no clamping pressure. Its clamp is 10 x 5 mm, so seed 000's 3062 kPa would be 153 N, past the
+# rig's 90 N safety limit (and the 98 N load cell); 1000 kPa (50 N) sits inside Table 1's range (612-4287 kPa).
+SEED001_PRESSURE_KPA = 1000.0
 
 
 @dataclass(frozen=True)
@@ -75,11 +78,13 @@ def _seed001() -> Preset:
         geometry=geom,
         fluid=AIR_25C,
         line=_line_from_table1(0, width_scale=geom.width / 0.004),
-        clamp=law.clamp_at(3062e3),
+        clamp=law.clamp_at(SEED001_PRESSURE_KPA * 1e3),
         mechanics=replace(paper.base.mechanics, density=2000.0, mu_v=None),  # in air: rho A + tiny m_a(omega)
-        Kt_bar=law.kt_bar_at(3062e3),
+        Kt_bar=law.kt_bar_at(SEED001_PRESSURE_KPA * 1e3),
+        pressure=SEED001_PRESSURE_KPA * 1e3,
     )
-    return Preset("seed001", base, law, 3062.0, HammersteinParams(), "seed 001: 20 mm free, 10 mm clamped, 0.2 x 5 mm, in air")
+    return Preset("seed001", base, law, SEED001_PRESSURE_KPA, HammersteinParams(),
+                  "seed 001: 20 mm free, 10 mm clamped, 0.2 x 5 mm, in air, clamped at 1000 kPa (50 N)")
 
 
 _PRESETS = {"paper": _paper, "seed001": _seed001}

@@ -16,11 +16,13 @@ from labrig import __version__
 def render(data) -> str:
     """The report page of gathered data (:func:`labrig.report.data.gather`)."""
     from labrig.report import html as h
-    from labrig.report import sections_diag, sections_fit
+    from labrig.report import sections_diag, sections_fit, sections_seed001
 
     stamp = datetime.now(timezone.utc).isoformat(timespec="seconds")
     body = (h.para(f"Report written {stamp} by labrig {__version__}.")
-            + sections_fit.header(data) + sections_fit.seed000(data) + sections_diag.seed001(data) + sections_diag.diagnosis(data))
+            + sections_fit.header(data) + sections_fit.seed000(data)
+            + (sections_seed001.section(data) if (data.seed001 or {}).get("methods") else sections_diag.seed001(data))
+            + sections_diag.diagnosis(data))
     return h.page(f"labrig report: {data.path.name}", body)
 
 
