@@ -12,8 +12,11 @@ trigger on ``/<device>/ai/StartTrigger``, written and started first (it arms and
 AI task then starts both on the same sample clock edge, so sample k of the drive and of every input
 belong to the same instant.
 
-Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive.
-Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
+Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive;
+``read_drive_V()`` reads the drive back through ``voltage_channel`` so a caller can verify it.
+Timeouts are seconds of the rig's clock (``time_scale`` rig seconds per wall second; 1 on a real bench),
+never shorter than ``wall_floor_s`` wall seconds (the host's and the transport's own latency).
+Every call can be recorded into a ``Transcript`` and replayed without hardware.
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ from nidaqmx._grpc_interpreter import GrpcStubInterpreter  # pinned nidaqmx: see
 from nidaqmx.constants import AcquisitionType, Edge
 from nidaqmx.errors import DaqError, DaqNotFoundError
 from nidaqmx.errors import RpcError as NiRpcError
-from nidaqmx.stream_readers import AnalogMultiChannelReader
+from nidaqmx.stream_readers import AnalogMultiChannelReader, AnalogSingleChannelReader
 from nidaqmx.stream_writers import AnalogSingleChannelWriter
 from nidaqmx.task._task import _TaskAlternateConstructor
 
@@ -44,6 +47,10 @@ OVERFLOW_CODES = {-200279, -200010}  # samples no longer available, input FIFO o
 TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-until-done, operation timed out
 GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
 GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
+BLOCK_S = 0.25  # rig seconds per streamed block of a finite record: how late a limit check can be at 1x
+BLOCK_WALL_S = 0.002  # ... but never fewer wall seconds than this (a read costs ~1 ms: a 1000x bench)
+READ_MARGIN_S = 2.0  # rig seconds a block may come late before the read times out
+READBACK_N, READBACK_FS = 20, 1000.0  # drive read-back: 20 ms averaged (a whole mains cycle)
 CHANNEL_OPTIONS = [
     ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
     ("grpc.max_send_message_length", -1),
@@ -78,6 +85,8 @@ class DaqRig:
         transcript: Transcript | None = None,
         name: str = "daq",
         replay: CallReplayer | None = None,
+        time_scale: float = 1.0,
+        wall_floor_s: float = 0.01,
     ):
         self.device, self.grpc_target, self.name = device, grpc_target, name
         self.drive_channel = drive_channel
@@ -85,6 +94,7 @@ class DaqRig:
         self.current_gain_A_per_V, self.displacement_m_per_V = float(current_gain_A_per_V), float(displacement_m_per_V)
         self.ai_range_V, self.ao_range_V = float(ai_range_V), float(ao_range_V)
         self.transcript, self._replay = transcript, replay
+        self.time_scale, self.wall_floor_s = float(time_scale), float(wall_floor_s)
         self._channel: grpc.Channel | None = None
         self._interpreter: GrpcStubInterpreter | None = None
         if grpc_target is not None and replay is None:
@@ -160,6 +170,15 @@ class DaqRig:
         handle, close_on_exit = self._interpreter.create_task(tname)
         return _TaskAlternateConstructor(handle, self._interpreter, close_on_exit)
 
+    def _wall(self, rig_s: float) -> float:
+        """A timeout of ``rig_s`` rig seconds as the wall seconds nidaqmx waits."""
+        return max(rig_s / self.time_scale, self.wall_floor_s)
+
+    @property
+    def replaying(self) -> bool:
+        """True when the rig answers from a recording (no hardware: nothing to make safe or read back)."""
+        return self._replay is not None
+
     def _phys(self, ch: str) -> str:
         return f"{self.device}/{ch}"
 
@@ -219,33 +238,85 @@ class DaqRig:
 
     # ------------------------------------------------------------------------------ public API
     def run_finite(self, drive_V: np.ndarray, fs: float, timeout_s: float | None = None) -> dict[str, np.ndarray]:
-        """Put ``drive_V`` out at ``fs`` and record the 3 inputs over the same samples.
+        """Put ``drive_V`` out at ``fs`` and record the 3 inputs over the same samples (``stream_finite`` whole).
 
         Returns SI arrays ``t_s`` (from the first sample), ``voltage_V``, ``current_A``, ``displacement_m``.
         """
+        blocks = list(self.stream_finite(drive_V, fs, timeout_s=timeout_s))
+        return {k: np.concatenate([b[k] for b in blocks]) for k in KEYS}
+
+    def stream_finite(self, drive_V: np.ndarray, fs: float, block_s: float | None = None,
+                      timeout_s: float | None = None) -> Iterator[dict[str, np.ndarray]]:
+        """``run_finite`` block by block, each yielded as soon as the card has acquired it.
+
+        ``block_s``: rig seconds per block (default ``BLOCK_S``, at least ``BLOCK_WALL_S`` wall seconds).
+        Each read may wait the block's duration plus ``READ_MARGIN_S`` rig seconds (``timeout_s``, if
+        given, bounds the whole record). A caller that stops iterating early (a limit tripped) or an error
+        leaves 0 V on the drive. The transcript holds the whole record as one ``run_finite`` exchange,
+        written once it completes, so a replay answers it whatever the block size.
+        """
         drive = self._check_drive(drive_V)
         fs, n = float(fs), len(drive)
-        timeout = float(timeout_s) if timeout_s is not None else n / fs + 10.0
         args = {"fs": fs, "n": n, "drive_sha256": _digest(drive), **self._settings()}
-
-        def run() -> bytes:
-            self._release()
-            try:
+        block_rig = max(BLOCK_S if block_s is None else float(block_s), BLOCK_WALL_S * self.time_scale)
+        per = max(1, min(n, int(round(block_rig * fs))))
+        if self._replay is not None:
+            out = self._unpack(self._replay.call("run_finite", args))
+            for a in range(0, n, per):
+                yield {k: v[a : a + per] for k, v in out.items()}
+            return
+        total_wall = None if timeout_s is None else self._wall(float(timeout_s))
+        parts: list[dict[str, np.ndarray]] = []
+        done = False
+        self._release()
+        try:
+            with self._errors("run_finite"):
+                self._fs = fs
+                ao = self._setup(fs, AcquisitionType.FINITE, n, drive, self._wall(n / fs + READ_MARGIN_S))
+                assert self._reader is not None and ao is not None
+            pos = 0
+            while pos < n:
+                k = min(per, n - pos)
+                raw = np.zeros((3, k))
+                wait = self._wall(k / fs + READ_MARGIN_S) if total_wall is None else total_wall
                 with self._errors("run_finite"):
-                    self._fs = fs
-                    ao = self._setup(fs, AcquisitionType.FINITE, n, drive, timeout)
-                    raw = np.zeros((3, n))
-                    assert self._reader is not None and ao is not None
-                    self._reader.read_many_sample(raw, n, timeout=timeout)
-                    ao.wait_until_done(timeout=timeout)
-            except BaseException:
-                self.abort()  # 0 V on the drive before the error goes up
-                raise
-            self._release()  # the output now holds the drive's last sample
-            out = self._scale(raw, 0)
-            return to_bytes(*(out[k] for k in KEYS))
+                    self._reader.read_many_sample(raw, k, timeout=wait)
+                block = self._scale(raw, pos)
+                parts.append(block)
+                pos += k
+                yield block
+            with self._errors("run_finite"):
+                ao.wait_until_done(timeout=self._wall(READ_MARGIN_S))
+            done = True
+        finally:
+            if not done:
+                self.abort()  # an error, or the caller stopped early: 0 V on the drive before anything else
+        self._release()  # the output now holds the drive's last sample
+        if self.transcript is not None:
+            whole = {k: np.concatenate([p[k] for p in parts]) for k in KEYS}
+            self.transcript.add(self.name, "call", payload=to_bytes(*(whole[k] for k in KEYS)), method="run_finite", args=args)
 
-        return self._unpack(self._call("run_finite", args, run))
+    def read_drive_V(self) -> float:
+        """The drive as the card reads it back now on ``voltage_channel`` (V, mean of ``READBACK_N`` samples).
+
+        Not recorded in the transcript (like ``abort``): it is the safety check, not part of a protocol.
+        Raises an ``InstrumentError`` when the card cannot be read.
+        """
+        if self._replay is not None:
+            raise InstrumentErrorReply(self.name, "read_drive_V: a replayed rig has no drive to read")
+        try:
+            with self._errors("read_drive_V"):
+                task = self._new_task("readback")
+                task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
+                                                     max_val=self.ai_range_V)
+                task.timing.cfg_samp_clk_timing(READBACK_FS, sample_mode=AcquisitionType.FINITE,
+                                                samps_per_chan=READBACK_N)
+                raw = np.zeros(READBACK_N)
+                AnalogSingleChannelReader(task.in_stream).read_many_sample(
+                    raw, READBACK_N, timeout=self._wall(READBACK_N / READBACK_FS + READ_MARGIN_S))
+        finally:
+            self._release()
+        return float(np.mean(raw))
 
     def start_continuous(self, fs: float, drive_block: np.ndarray | None = None, buffer_s: float = 10.0) -> None:
         """Start continuous acquisition at ``fs``; AO regenerates ``drive_block`` (else the drive is left as is)."""
@@ -257,7 +328,7 @@ class DaqRig:
             self._release()
             try:
                 with self._errors("start_continuous"):
-                    self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, 10.0)
+                    self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, self._wall(10.0))
             except BaseException:
                 self.abort()
                 raise
@@ -267,7 +338,9 @@ class DaqRig:
         self._call("start_continuous", args, run)
 
     def read_block(self, n: int, timeout_s: float = 10.0) -> dict[str, np.ndarray]:
-        """The next ``n`` samples per channel of the continuous acquisition (contiguous with the last block)."""
+        """The next ``n`` samples per channel of the continuous acquisition (contiguous with the last block).
+
+        ``timeout_s`` is rig seconds."""
         n = int(n)
 
         def run() -> bytes:
@@ -276,7 +349,7 @@ class DaqRig:
             raw = np.zeros((3, n))
             try:
                 with self._errors("read_block"):
-                    self._reader.read_many_sample(raw, n, timeout=timeout_s)
+                    self._reader.read_many_sample(raw, n, timeout=self._wall(timeout_s))
             except BaseException:
                 self.abort()
                 raise
@@ -306,7 +379,7 @@ class DaqRig:
             try:
                 task.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
                                                      max_val=self.ao_range_V)
-                AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=10.0)
+                AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=self._wall(10.0))
             finally:
                 self._release()
         self._drive_live = False
