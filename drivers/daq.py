@@ -13,7 +13,7 @@ AI task then starts both on the same sample clock edge, so sample k of the drive
 belong to the same instant.
 
 Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive;
-``read_drive_V()`` reads the drive back through ``voltage_channel`` so a caller can verify it.
+``drive_readback_V()`` reads the drive back through ``voltage_channel`` so a caller can verify it.
 Timeouts are seconds of the rig's clock (``time_scale`` rig seconds per wall second; 1 on a real bench),
 never shorter than ``wall_floor_s`` wall seconds (the host's and the transport's own latency).
 Every call can be recorded into a ``Transcript`` and replayed without hardware.
@@ -38,6 +38,7 @@ from nidaqmx.stream_readers import AnalogMultiChannelReader, AnalogSingleChannel
 from nidaqmx.stream_writers import AnalogSingleChannelWriter
 from nidaqmx.task._task import _TaskAlternateConstructor
 
+from drivers.daq_watchdog import DriveWatchdog
 from drivers.errors import (BufferOverflow, Disconnected, InstrumentError, InstrumentErrorReply,
                             InstrumentTimeout)
 from drivers.transcript import CallReplayer, Transcript
@@ -46,11 +47,11 @@ KEYS = ("t_s", "voltage_V", "current_A", "displacement_m")
 OVERFLOW_CODES = {-200279, -200010}  # samples no longer available, input FIFO overflow
 TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-until-done, operation timed out
 GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
+WATCHDOG_EXPIRED_WRITE = -200678  # DAQmxErrors.WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED
 GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
 BLOCK_S = 0.25  # rig seconds per streamed block of a finite record: how late a limit check can be at 1x
 BLOCK_WALL_S = 0.002  # ... but never fewer wall seconds than this (a read costs ~1 ms: a 1000x bench)
 READ_MARGIN_S = 2.0  # rig seconds a block may come late before the read times out
-READBACK_N, READBACK_FS = 20, 1000.0  # drive read-back: 20 ms averaged (a whole mains cycle)
 CHANNEL_OPTIONS = [
     ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
     ("grpc.max_send_message_length", -1),
@@ -85,6 +86,7 @@ class DaqRig:
         transcript: Transcript | None = None,
         name: str = "daq",
         replay: CallReplayer | None = None,
+        watchdog_s: float | None = None,
         time_scale: float = 1.0,
         wall_floor_s: float = 0.01,
     ):
@@ -105,6 +107,9 @@ class DaqRig:
         self._pos = 0  # samples per channel read since start_continuous
         self._drive_live = False  # a timed AO task may be putting out non-zero volts
         self._closed = False
+        self.watchdog: DriveWatchdog | None = None
+        if watchdog_s is not None and replay is None:
+            self.arm_watchdog(watchdog_s, time_scale)
 
     @classmethod
     def from_replay(cls, transcript: Transcript, device: str = "daq", **settings: Any) -> "DaqRig":
@@ -296,28 +301,6 @@ class DaqRig:
             whole = {k: np.concatenate([p[k] for p in parts]) for k in KEYS}
             self.transcript.add(self.name, "call", payload=to_bytes(*(whole[k] for k in KEYS)), method="run_finite", args=args)
 
-    def read_drive_V(self) -> float:
-        """The drive as the card reads it back now on ``voltage_channel`` (V, mean of ``READBACK_N`` samples).
-
-        Not recorded in the transcript (like ``abort``): it is the safety check, not part of a protocol.
-        Raises an ``InstrumentError`` when the card cannot be read.
-        """
-        if self._replay is not None:
-            raise InstrumentErrorReply(self.name, "read_drive_V: a replayed rig has no drive to read")
-        try:
-            with self._errors("read_drive_V"):
-                task = self._new_task("readback")
-                task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
-                                                     max_val=self.ai_range_V)
-                task.timing.cfg_samp_clk_timing(READBACK_FS, sample_mode=AcquisitionType.FINITE,
-                                                samps_per_chan=READBACK_N)
-                raw = np.zeros(READBACK_N)
-                AnalogSingleChannelReader(task.in_stream).read_many_sample(
-                    raw, READBACK_N, timeout=self._wall(READBACK_N / READBACK_FS + READ_MARGIN_S))
-        finally:
-            self._release()
-        return float(np.mean(raw))
-
     def start_continuous(self, fs: float, drive_block: np.ndarray | None = None, buffer_s: float = 10.0) -> None:
         """Start continuous acquisition at ``fs``; AO regenerates ``drive_block`` (else the drive is left as is)."""
         drive = None if drive_block is None else self._check_drive(drive_block)
@@ -379,7 +362,11 @@ class DaqRig:
             try:
                 task.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
                                                      max_val=self.ao_range_V)
-                AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=self._wall(10.0))
+                try:
+                    AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=self._wall(10.0))
+                except DaqError as e:  # our watchdog expired: the device holds the drive at its 0 V expiration state
+                    if not (self.watchdog is not None and e.error_code == WATCHDOG_EXPIRED_WRITE):
+                        raise
             finally:
                 self._release()
         self._drive_live = False
@@ -397,6 +384,8 @@ class DaqRig:
             return True
         except Exception:
             self._release()
+            if self.watchdog is not None:  # 0 V not confirmed: let the device's watchdog put it out
+                self.watchdog.stop_resetting()
             return False
 
     def close(self) -> None:
@@ -406,7 +395,10 @@ class DaqRig:
         try:
             if self._replay is None:  # a replay ends where the caller stops; the recorded close is not checked
                 self.zero_output()
+            self.disarm_watchdog()  # only once 0 V is written; otherwise it stays armed and expires to 0 V
         finally:
+            if self.watchdog is not None:
+                self.watchdog.stop_resetting()
             self._release()
             self._closed = True
             if self._channel is not None:
@@ -419,10 +411,53 @@ class DaqRig:
         if exc_type is None:
             self.close()
         else:  # do not mask the original error with a failure to zero
-            self.abort()
+            if self.abort():
+                self.disarm_watchdog()
             self._closed = True
             if self._channel is not None:
                 self._channel.close()
+
+    # ------------------------------------------------------------------------------ watchdog and readback
+    def arm_watchdog(self, timeout_s: float, time_scale: float = 1.0) -> None:
+        """Arm the device's watchdog timer: 0 V on the drive if the host stops resetting it for ``timeout_s`` rig
+        seconds (never less than ``drivers.daq_watchdog.WALL_FLOOR_S`` wall seconds); a daemon thread resets it."""
+        opts = None if self._channel is None else nidaqmx.GrpcSessionOptions(grpc_channel=self._channel,
+                                                                             session_name="")
+        wd = DriveWatchdog(self.device, self.drive_channel, timeout_s, time_scale, grpc_options=opts)
+        with self._errors("arm_watchdog"):
+            wd.arm()
+        self.watchdog = wd
+
+    def disarm_watchdog(self) -> None:
+        """Stop resetting the watchdog and clear its task (call with the drive at 0 V)."""
+        wd, self.watchdog = self.watchdog, None
+        if wd is not None:
+            wd.disarm()
+
+    def drive_readback_V(self, n: int = 20, fs: float = 1000.0, timeout_s: float = 10.0) -> float:
+        """The drive as the strip sees it: the mean of ``n`` samples of the voltage AI channel (releases what
+        runs first). Raises ``Disconnected`` etc. when it cannot be read: then the drive state is unknown.
+
+        ``timeout_s`` is rig seconds. Not recorded in the transcript (like ``abort``): it is the safety check
+        after a run or a fault, not protocol traffic, and a replay has no drive to read (it raises)."""
+        n, fs = int(n), float(fs)
+        if self._replay is not None:
+            raise InstrumentErrorReply(self.name, "drive_readback_V: a replayed rig has no drive to read")
+        self._release()
+        with self._errors("drive_readback_V"):
+            task = self._new_task("readback")
+            try:
+                task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
+                                                     max_val=self.ai_range_V)
+                task.timing.cfg_samp_clk_timing(fs, sample_mode=AcquisitionType.FINITE, samps_per_chan=n)
+                reader = AnalogSingleChannelReader(task.in_stream)
+                reader.verify_array_shape = False
+                raw = np.zeros(n)
+                task.start()
+                reader.read_many_sample(raw, n, timeout=self._wall(n / fs + timeout_s))
+            finally:
+                self._release()
+        return float(raw.mean())
 
     def describe(self) -> str:
         """One line for the session file: where and how the rig is wired."""

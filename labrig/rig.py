@@ -10,7 +10,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [instruments.clamp]     mode = "motor" (address) or "operator"
     [instruments.impedance] address (VISA resource name)
     [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
-                            channels, current_gain_A_per_V, displacement_m_per_V
+                            channels, current_gain_A_per_V, displacement_m_per_V, watchdog_s (rig seconds
+                            without a reset from the host before the DAQ puts 0 V on the drive by itself)
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
+from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
 from drivers.impedance_analyzer import ImpedanceAnalyzer
 from drivers.keyence import open_keyence
@@ -82,6 +84,7 @@ class DaqCfg(_Strict):
     displacement_channel: str = "ai2"
     current_gain_A_per_V: float = Field(1e-3, gt=0)
     displacement_m_per_V: float = Field(1e-3, gt=0)
+    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False)
 
 
 class Instruments(_Strict):
@@ -216,14 +219,14 @@ class Rig:
         if self.daq.replaying:
             return SafeState(0.0, tuple(problems))  # a replay drives nothing
         try:
-            drive = self.daq.read_drive_V()
+            drive = self.daq.drive_readback_V()
         except Exception as exc:
             problems.append(f"daq: drive read-back failed: {exc}")
             return SafeState(None, tuple(problems))
         if abs(drive) > ZERO_TOL_V and not problems:  # written but not there: try once more, then say so
             self.daq.abort()
             try:
-                drive = self.daq.read_drive_V()
+                drive = self.daq.drive_readback_V()
             except Exception as exc:
                 problems.append(f"daq: drive read-back failed: {exc}")
                 return SafeState(None, tuple(problems))
@@ -247,7 +250,6 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
     try:
         d = ins.daq
         daq = DaqRig(
-            time_scale=clock.time_scale,
             device=d.device,
             grpc_target=None if d.address == "local" else d.address,
             drive_channel=d.drive_channel,
@@ -257,6 +259,8 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             current_gain_A_per_V=d.current_gain_A_per_V,
             displacement_m_per_V=d.displacement_m_per_V,
             transcript=tr,
+            watchdog_s=d.watchdog_s,
+            time_scale=clock.time_scale,
         )
         opened.append(daq)
         analyzer = ImpedanceAnalyzer(ins.impedance.address, transcript=tr, timeout_s=rig_timeout(clock, REPLY_RIG_S, REPLY_WALL_S),

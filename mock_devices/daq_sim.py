@@ -22,41 +22,18 @@ from typing import Callable
 import numpy as np
 
 from mock_devices.bench_api import BenchView
+from mock_devices.daq_errors import ERR, ERR_MESSAGES, DaqmxError  # noqa: F401 (re-exported)
+from mock_devices.daq_watchdog import Watchdog, WatchdogUnit
 
-# DAQmx enum values (nidaqmx.constants) and error codes (nidaqmx.error_codes.DAQmxErrors)
+# DAQmx enum values (nidaqmx.constants); status codes are in mock_devices.daq_errors under nidaqmx's names
 FINITE, CONTINUOUS = 10178, 10123
 FILL_BY_SCAN = 1
-ERR_MESSAGES: dict[int, str] = {
-    -200279: "Attempted to read samples that are no longer available. The requested sample was previously "
-    "available, but has since been overwritten.",
-    -200284: "Some or all of the samples requested have not yet been acquired.",
-    -200278: "Attempted to read a sample beyond the final sample acquired.",
-    -200560: "Wait Until Done did not indicate that the task was done within the specified timeout.",
-    -200088: "Task specified is invalid or does not exist.",
-    -200170: "Physical channel specified does not exist on this device.",
-    -200220: "Device identifier is invalid.",
-    -200452: "Specified property is not supported by the device or is not applicable to the task.",
-    -200462: "Generation cannot be started, because the output buffer is empty.",
-    -200459: "Write cannot be performed because this task does not contain any output channels.",
-    -200561: "Attempted writing analog data that is too large or too small.",
-    -200479: "Specified operation cannot be performed while the task is running.",
-    -50103: "The specified resource is reserved. The operation could not be completed as specified.",
-    -200265: "An attempt has been made to use an invalid trigger source.",
-    -201003: "Device cannot be accessed. Possible causes: device is no longer present in the system.",
-}
+RISING, FALLING = 10280, 10171
 OVERFLOW, NOT_YET, BEYOND_END, WAIT_TIMEOUT = -200279, -200284, -200278, -200560
-EAGER_MAX = 2_000_000  # finite records up to this many samples are computed when AI starts
+EAGER_MAX = 2_000_000  # finite records up to this many samples are computed (speculatively) when AI starts
 AI_RANGES_V = (0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0)  # X-series input ranges (±)
-
-
-class DaqmxError(Exception):
-    """A DAQmx status code the server reports (negative = error)."""
-
-    def __init__(self, code: int, message: str | None = None, samps_per_chan_read: int | None = None):
-        self.code = code
-        self.message = message or ERR_MESSAGES.get(code, f"DAQmx error {code}")
-        self.samps_per_chan_read = samps_per_chan_read
-        super().__init__(f"{code}: {self.message}")
+# digital-edge start trigger sources the card routes (terminal names are case-insensitive in DAQmx)
+TERMINALS = {t.lower(): t for t in ("ai/StartTrigger", "ao/StartTrigger", *(f"PFI{i}" for i in range(16)))}
 
 
 @dataclass
@@ -70,23 +47,28 @@ class Chan:
 @dataclass
 class Task:
     name: str
-    kind: str = ""  # "ai" | "ao" once a channel is added
+    kind: str = ""  # "ai" | "ao" once a channel is added; "wdt" for a watchdog timer task
     chans: list[Chan] = field(default_factory=list)
     rate: float | None = None  # None = on-demand timing
     mode: int = FINITE
     samps: int = 1000
-    trigger: str | None = None  # start trigger terminal, e.g. "/SimDev1/ai/StartTrigger"
+    trigger: str | None = None  # start trigger source as the client gave it ("ai/StartTrigger", "/Dev1/PFI0")
+    trig_edge: int = RISING
     state: str = "idle"  # idle | armed | running
     t0: float = 0.0  # simulated start time
     ao_buf: np.ndarray | None = None  # (chans, n) AO samples
     buf_size: int | None = None  # input buffer in use (set at start)
     buf_user: int | None = None  # input buffer the client asked for
     read_all_avail: bool = False
+    auto_started: bool = False  # started implicitly by a read: stopped again once the finite record is read
     read_pos: int = 0
     gen_pos: int = 0
     pending: deque = field(default_factory=deque)  # generated AI blocks not yet read
+    blocks: list = field(default_factory=list)  # [start index, drive fed to the bench] of blocks still in use
+    regen: tuple[int, np.ndarray] | None = None  # (block start, drive kept) when the AO change voided a block
     sticky_error: int | None = None
     debt_s: float = 0.0  # simulated time spent computing the bench: not the client's lag
+    wd: Watchdog | None = None
 
     def n_total(self) -> int | None:
         return self.samps if self.mode == FINITE else None
@@ -101,7 +83,14 @@ def _default_input_buffer(rate: float) -> int:
 
 
 class SimDevice:
-    """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting."""
+    """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting.
+
+    Causality: an AI sample is computed from what AO puts out at that sample's instant. Samples are computed
+    ahead (a finite record when it starts, continuous blocks of ``block_s``) on the assumption that AO keeps
+    doing what it is doing; any change of the drive (a write, an AO start or stop, a watchdog expiry) at
+    simulated time t first computes the samples before t from the old state and voids those after t, which
+    are computed again from the new one when read.
+    """
 
     def __init__(self, bench: BenchView, name: str = "SimDev1", product_type: str = "PXIe-6361",
                  drive_channel: str = "ao0", current_gain_A_per_V: float = 1e-3, displacement_m_per_V: float = 1e-3,
@@ -113,12 +102,14 @@ class SimDevice:
         self.ai_phys = [f"ai{i}" for i in range(n_ai)]
         self.ao_phys = [f"ao{i}" for i in range(n_ao)]
         self.ao_level: dict[str, float] = {p: 0.0 for p in self.ao_phys}  # static output when no task drives
+        self.ao_lock: dict[str, tuple[float, float]] = {}  # phys -> (expired at, value): watchdog-locked outputs
         self.tasks: dict[str, Task] = {}
         self.fault: str | None = None
         self.fault_code = -50103
         self._rng = np.random.default_rng(seed)
         self._lock = threading.RLock()
         self._n_unnamed = 0
+        self.watchdog = WatchdogUnit(bench.clock, self._lock, self._expire, self._unlock)
 
     # ---------------------------------------------------------------------------------- faults
     def inject(self, fault: str, code: int | None = None) -> None:
@@ -137,19 +128,20 @@ class SimDevice:
     def check_call_fault(self) -> None:
         """Raise the injected one-shot ``"error"`` on whichever call comes next."""
         with self._lock:
+            self.watchdog.poll()  # every call sees an expiry the clock has passed
             if self.fault == "error":
                 self.fault = None
                 raise DaqmxError(self.fault_code)
 
     # ---------------------------------------------------------------------------------- tasks
-    def create_task(self, name: str) -> tuple[str, bool]:
+    def create_task(self, name: str, kind: str = "") -> tuple[str, bool]:
         with self._lock:
             if not name:
                 self._n_unnamed += 1
                 name = f"_unnamedTask<{self._n_unnamed}>"
             if name in self.tasks:  # the server attaches to an existing session of that name
                 return name, False
-            self.tasks[name] = Task(name)
+            self.tasks[name] = Task(name, kind)
             return name, True
 
     def task(self, name: str) -> Task:
@@ -162,12 +154,20 @@ class SimDevice:
         with self._lock:
             self.stop(name)
             del self.tasks[name]
+            self.watchdog.remove(name)
 
-    def clear_all(self) -> None:
-        """What a dying server process does: every task is cleared, outputs hold their last value."""
+    def clear_all(self, keep_watchdogs: bool = False) -> None:
+        """What a dying server process does: every task is cleared, outputs hold their last value.
+        ``keep_watchdogs``: a lost link instead; the card's watchdog timers run on in hardware."""
         with self._lock:
             for name in list(self.tasks):
-                self.clear_task(name)
+                if not (keep_watchdogs and self.tasks[name].kind == "wdt"):
+                    self.clear_task(name)
+
+    def power_off(self) -> None:
+        with self._lock:
+            self.clear_all()
+        self.watchdog.halt()
 
     def _parse_phys(self, spec: str, kind: str) -> list[str]:
         out: list[str] = []
@@ -210,15 +210,75 @@ class SimDevice:
                 raise DaqmxError(-200452, "Invalid sample clock settings.")
             t.rate, t.mode, t.samps = float(rate), mode, int(samps)
 
-    def cfg_start_trigger(self, name: str, source: str | None) -> None:
+    def cfg_start_trigger(self, name: str, source: str | None, edge: int = RISING) -> None:
+        """Digital-edge start trigger (``None``: none). Like DAQmx, the source is checked when the task starts."""
         with self._lock:
             t = self.task(name)
-            if source is not None:
-                dev, _, term = source.strip("/").partition("/")
-                if dev != self.name or term not in ("ai/StartTrigger", "ao/StartTrigger"):
-                    raise DaqmxError(-200265, f"Invalid trigger source: {source!r}")
-                source = f"/{dev}/{term}"
-            t.trigger = source
+            if t.state != "idle":
+                raise DaqmxError(-200479)
+            t.trigger, t.trig_edge = (source or None), edge
+
+    def resolve_terminal(self, source: str) -> str:
+        """``"ai/StartTrigger"`` (relative to this device) or ``"/SimDev1/ai/StartTrigger"`` -> the absolute name."""
+        s = source.strip()
+        dev, term = s[1:].partition("/")[::2] if s.startswith("/") else (self.name, s)
+        canon = TERMINALS.get(term.lower())
+        if dev != self.name or canon is None:
+            raise DaqmxError(ERR["INVALID_ROUTING_SOURCE_TERMINAL_NAME_ROUTING"],
+                             f"Source terminal to be routed could not be found on the device: {source!r}")
+        return f"/{self.name}/{canon}"
+
+    # ---------------------------------------------------------------------------------- watchdog
+    def create_watchdog(self, session: str, device: str, timeout_s: float) -> tuple[str, bool]:
+        with self._lock:
+            if device != self.name:
+                raise DaqmxError(-200220, f"Device identifier is invalid: {device!r}")
+            name, new = self.create_task(session, "wdt")
+            t = self.task(name)
+            if new:
+                try:
+                    t.wd = self.watchdog.create(name, timeout_s)
+                except DaqmxError:
+                    del self.tasks[name]
+                    raise
+            return name, new
+
+    def watchdog_of(self, name: str) -> Watchdog:
+        t = self.task(name)
+        if t.wd is None:
+            raise DaqmxError(ERR["ACTION_NOT_SUPPORTED_TASK_NOT_WATCHDOG"])
+        return t.wd
+
+    def cfg_watchdog_ao(self, name: str, spec: str, states: list[float], types: list[int]) -> None:
+        with self._lock:
+            wd = self.watchdog_of(name)
+            phys = self._parse_phys(spec, "ao")
+            if len(states) != len(phys) or len(types) != len(phys):
+                raise DaqmxError(ERR["WATCHDOG_CHANNEL_EXPIRATION_STATE_NOT_SPECIFIED"])
+            if any(abs(v) > 10.0 for v in states):
+                raise DaqmxError(-200561)
+            wd.states.update({p: (float(v), int(k)) for p, v, k in zip(phys, states, types)})
+
+    def _expire(self, wd: Watchdog, t_exp: float) -> None:
+        """The timer ran out at ``t_exp``: outputs to their expiration states and locked; AO tasks on them fail."""
+        locked = {p for p, (_, kind) in wd.states.items() if kind != 10160}  # NO_CHANGE leaves the line alone
+        if not locked:
+            return
+        self._ao_will_change(t_exp)
+        for phys in locked:
+            value = wd.states[phys][0]
+            self.ao_lock[phys], self.ao_level[phys] = (t_exp, value), value
+        for o in self.tasks.values():
+            if o.kind == "ao" and o.state != "idle" and locked & {c.phys for c in o.chans}:
+                o.state, o.sticky_error = "idle", ERR["WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED"]
+
+    def _unlock(self, wd: Watchdog) -> None:
+        for phys in wd.states:  # the outputs keep the expiration value until written
+            self.ao_lock.pop(phys, None)
+
+    def _check_locked(self, t: Task) -> None:
+        if any(c.phys in self.ao_lock for c in t.chans):
+            raise DaqmxError(ERR["WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED"])
 
     # ---------------------------------------------------------------------------------- output
     def write(self, name: str, flat: np.ndarray, n: int, auto_start: bool, layout: int) -> int:
@@ -232,19 +292,24 @@ class SimDevice:
             for c, row in zip(t.chans, data):
                 if row.size and (row.min() < c.lo - 1e-9 or row.max() > c.hi + 1e-9):
                     raise DaqmxError(-200561)
+            self._check_locked(t)
             if t.rate is None:  # on-demand: the output changes now
+                if t.state == "idle" and not auto_start:
+                    raise DaqmxError(ERR["CANNOT_WRITE_WHEN_AUTO_START_FALSE_AND_TASK_NOT_RUNNING"])
                 self._check_reserved(t)
+                self._ao_will_change(self.bench.clock.now())
                 for c, row in zip(t.chans, data):
                     self.ao_level[c.phys] = float(row[-1])
-                t.state = "running"
-                return n
+                return n  # an auto-started task is back in its earlier state: the channel is free again
+            if t.state == "running":
+                self._ao_will_change(self.bench.clock.now())
             t.ao_buf = data.copy()
             if auto_start and t.state == "idle":
                 self.start(name)
             return n
 
     def ao_values(self, phys: str, times: np.ndarray) -> np.ndarray:
-        """What AO channel ``phys`` puts out at simulated ``times`` (hold, regenerate, finite end)."""
+        """What AO channel ``phys`` puts out at simulated ``times`` (hold, regenerate, finite end, watchdog)."""
         out = np.full(len(times), self.ao_level.get(phys, 0.0))
         for t in self.tasks.values():
             if t.kind != "ao" or t.state != "running" or t.rate is None or t.ao_buf is None:
@@ -257,7 +322,35 @@ class SimDevice:
                 m = k >= 0
                 kk = k[m] if t.mode == CONTINUOUS else np.minimum(k[m], t.samps - 1)
                 out[m] = buf[kk % len(buf)]
+        lock = self.ao_lock.get(phys)
+        if lock is not None:
+            out[times >= lock[0]] = lock[1]
         return out
+
+    def _ao_will_change(self, t_c: float) -> None:
+        """Call before the drive changes at simulated ``t_c``: AI samples before it come from the old drive,
+        samples computed ahead from ``t_c`` on are voided (the block they came from is run again when read)."""
+        for t in self.tasks.values():
+            if t.kind != "ai" or t.state != "running" or t.rate is None:
+                continue
+            k_c = max(t.read_pos, int(np.ceil((t_c - t.t0) * t.rate - 1e-6)))
+            total = t.n_total()
+            if total is not None:
+                k_c = min(k_c, total)
+            if t.gen_pos < k_c:
+                self._generate(t, k_c, exact=True)
+            elif t.gen_pos > k_c:
+                keep, kept = k_c - t.read_pos, deque()
+                for blk in t.pending:
+                    if keep <= 0:
+                        break
+                    kept.append(blk[:, :keep])
+                    keep -= blk.shape[1]
+                t.pending = kept
+                while t.blocks and t.blocks[-1][0] > k_c:
+                    t.blocks.pop()
+                start, drive = t.blocks.pop()
+                t.regen, t.gen_pos = (start, drive[: k_c - start]), k_c
 
     # ---------------------------------------------------------------------------------- control
     def _check_reserved(self, t: Task) -> None:
@@ -273,40 +366,54 @@ class SimDevice:
             t = self.task(name)
             if t.state != "idle":
                 raise DaqmxError(-200479)
+            if t.wd is not None:
+                t.state = "running"
+                self.watchdog.start(t.wd)
+                return
             self._check_reserved(t)
+            if t.kind == "ao":
+                self._check_locked(t)
             if t.kind == "ao" and t.rate is not None and t.ao_buf is None:
                 raise DaqmxError(-200462)
+            src = self.resolve_terminal(t.trigger) if t.trigger else None
             t.read_pos = t.gen_pos = 0
             t.pending.clear()
-            t.sticky_error, t.debt_s = None, 0.0
-            if t.trigger:
-                t.state = "armed"  # waits for the edge of the other task's start trigger
+            t.blocks, t.regen = [], None
+            t.sticky_error, t.debt_s, t.auto_started = None, 0.0, False
+            if src:
+                t.state = "armed"  # waits for the edge of the other task's start trigger (a PFI line never comes)
             else:
                 self._begin(t, self.bench.clock.now())
 
     def _begin(self, t: Task, t0: float) -> None:
+        if t.kind == "ao":
+            self._ao_will_change(t0)
         t.state, t.t0 = "running", t0
         if t.kind == "ai":
             default = t.samps if t.mode == FINITE else max(t.samps, _default_input_buffer(t.rate or 1.0))
             t.buf_size = t.buf_user or default
         term = f"/{self.name}/{t.kind}/StartTrigger"
         for o in self.tasks.values():
-            if o.state == "armed" and o.trigger == term:
+            if o.state == "armed" and o.trigger and self.resolve_terminal(o.trigger) == term:
                 self._begin(o, t0)
-        if t.kind == "ai" and t.mode == FINITE and t.samps <= EAGER_MAX:
-            # the whole record at once: the bench then knows the motion while it happens (laser, load cell)
-            # and is asked once; samples still become readable only as the clock passes them
+        if t.kind == "ai" and t.mode == FINITE and t.rate is not None and t.samps <= EAGER_MAX:
+            # the whole record ahead (one bench call, the bench then knows the motion while it happens);
+            # a later change of the drive voids what follows it (_ao_will_change)
             self._generate(t, t.samps)
 
     def stop(self, name: str) -> None:
         with self._lock:
             t = self.task(name)
-            if t.kind == "ao" and t.state == "running" and t.rate is not None:
-                now = np.array([self.bench.clock.now()])
-                for c in t.chans:  # the output holds what it was putting out when stopped
-                    self.ao_level[c.phys] = float(self.ao_values(c.phys, now)[0])
+            if t.wd is not None:
+                self.watchdog.stop(t.wd)
+            elif t.kind == "ao" and t.state == "running" and t.rate is not None:
+                now = self.bench.clock.now()
+                held = {c.phys: float(self.ao_values(c.phys, np.array([now]))[0]) for c in t.chans}
+                self._ao_will_change(now)
+                self.ao_level.update(held)  # the output holds what it was putting out when stopped
             t.state = "idle"
             t.pending.clear()
+            t.blocks, t.regen = [], None
 
     # ---------------------------------------------------------------------------------- input
     def acquired(self, t: Task) -> int:
@@ -320,24 +427,31 @@ class SimDevice:
     def available(self, t: Task) -> int:
         return max(0, self.acquired(t) - t.read_pos)
 
-    def _generate(self, t: Task, upto: int) -> None:
-        """Ask the bench for samples [gen_pos, upto), in blocks large enough to keep the bench calls few."""
+    def _generate(self, t: Task, upto: int, exact: bool = False) -> None:
+        """Ask the bench for samples [gen_pos, upto), in blocks large enough to keep the bench calls few
+        (``exact``: no further than ``upto``). A voided block is run again from its start, with the drive
+        it had before the change, so the bench sees one contiguous history."""
         total = t.n_total()
         rate = float(t.rate or 1.0)
         while t.gen_pos < upto:
-            k = max(upto - t.gen_pos, int(rate * self.block_s) + 1)
-            if total is None:
-                k = min(k, max(upto - t.gen_pos, (t.buf_size or k) // 2))
+            start, kept = t.regen if t.regen is not None else (t.gen_pos, np.empty(0))
+            t.regen = None
+            k = upto - t.gen_pos
+            if not exact:
+                k = max(k, int(rate * self.block_s) + 1)
+                if total is None:
+                    k = min(k, max(upto - t.gen_pos, (t.buf_size or k) // 2))
             if total is not None:
                 k = min(k, total - t.gen_pos)
-            idx = t.gen_pos + np.arange(k)
-            times = t.t0 + idx / rate
-            drive = self.ao_values(self.drive_channel, times)
+            times = t.t0 + (t.gen_pos + np.arange(k)) / rate
+            drive = np.concatenate([kept, self.ao_values(self.drive_channel, times)])
             w0 = time.perf_counter()
-            rec = self.bench.run_record(float(times[0]), rate, drive)
+            rec = self.bench.run_record(t.t0 + start / rate, rate, drive)
             t.debt_s += (time.perf_counter() - w0) * self.bench.clock.time_scale
-            sig = {"ai0": rec["voltage_V"], "ai1": np.asarray(rec["current_A"]) / self.gain_A_per_V,
-                   "ai2": np.asarray(rec["displacement_m"]) / self.m_per_V}
+            skip = len(kept)
+            sig = {"ai0": np.asarray(rec["voltage_V"])[skip:],
+                   "ai1": np.asarray(rec["current_A"])[skip:] / self.gain_A_per_V,
+                   "ai2": np.asarray(rec["displacement_m"])[skip:] / self.m_per_V}
             block = np.empty((len(t.chans), k))
             for i, c in enumerate(t.chans):
                 block[i] = sig.get(c.phys, 0.0)
@@ -347,6 +461,7 @@ class SimDevice:
                     block[i] += self._rng.normal(0.0, self.noise_V, k)
                 np.clip(np.round(block[i] / lsb) * lsb, -rng, rng - lsb, out=block[i])
             t.pending.append(block)
+            t.blocks.append((start, drive))
             t.gen_pos += k
 
     def _take(self, t: Task, n: int) -> np.ndarray:
@@ -362,23 +477,33 @@ class SimDevice:
                 t.pending[0] = blk[:, need:]
                 need = 0
         t.read_pos += n
+        while len(t.blocks) > 1 and t.blocks[1][0] <= t.read_pos:  # drives of blocks read to the end
+            t.blocks.pop(0)
+        if t.auto_started and t.read_pos == t.n_total():
+            self.stop(t.name)  # a finite task a read started returns to its earlier state
         if not parts:
             return np.empty((len(t.chans), 0))
         return parts[0] if len(parts) == 1 else np.concatenate(parts, axis=1)
 
     def read(self, name: str, n: int, timeout_s: float, alive: Callable[[], bool] = lambda: True) -> np.ndarray:
-        """Read ``n`` samples per channel (``-1``: all available); returns (chans, n). Blocks up to ``timeout_s``."""
+        """Read ``n`` samples per channel (``-1``: all available); returns (chans, n). Blocks up to ``timeout_s``.
+
+        A timeout with some samples acquired returns them (they are consumed) in a ``DaqmxError`` -200284
+        whose ``partial`` holds them, as DAQmx Read does."""
         deadline = None if timeout_s < 0 else time.monotonic() + timeout_s
         while True:
             with self._lock:
                 t = self.task(name)
                 if t.kind != "ai":
                     raise DaqmxError(-200452, "Read cannot be performed: the task has no input channels.")
+                if t.rate is None:
+                    raise DaqmxError(-200452, "On-demand (software-timed) AI is not simulated: configure a sample clock.")
                 if self.fault == "overflow":
                     self.fault = None
                     raise DaqmxError(OVERFLOW, samps_per_chan_read=0)
                 if t.state == "idle":
                     self.start(name)  # DAQmx Read starts an idle task implicitly
+                    t.auto_started = True
                 if t.sticky_error is not None:
                     raise DaqmxError(t.sticky_error, samps_per_chan_read=0)
                 acq, total = self.acquired(t), t.n_total()
@@ -398,14 +523,18 @@ class SimDevice:
                 if not stalled and acq - t.read_pos >= want:
                     return self._take(t, want)
                 wait_s = (want - (acq - t.read_pos)) / float(t.rate or 1.0) / self.bench.clock.time_scale
-            if (deadline is not None and time.monotonic() >= deadline) or not alive():
-                raise DaqmxError(NOT_YET, samps_per_chan_read=0)
+                if (deadline is not None and time.monotonic() >= deadline) or not alive():
+                    got = 0 if stalled else acq - t.read_pos
+                    part = self._take(t, got) if got > 0 else None
+                    raise DaqmxError(NOT_YET, samps_per_chan_read=got, partial=part)
             left = 0.05 if deadline is None else deadline - time.monotonic()
             time.sleep(max(0.0, min(wait_s, left, 0.05)))
 
     def is_done(self, name: str) -> bool:
         with self._lock:
             t = self.task(name)
+            if t.sticky_error is not None and t.kind == "ao":
+                raise DaqmxError(t.sticky_error)
             if t.state == "idle" or t.rate is None:
                 return True
             if t.state == "armed" or t.mode == CONTINUOUS:

@@ -49,7 +49,9 @@ class MethodLog(grpc.ServerInterceptor):
 
 
 def record_calls() -> dict[str, list[str]]:
-    """RPC names, in order, for one finite run and one continuous run (each from a fresh rig to close)."""
+    """RPC names, in order, for one finite run, one continuous run, and a rig with its watchdog armed, reset once
+    by hand, read back and closed (each from a fresh rig to close). The watchdog's timeout is long enough that
+    its own reset thread stays silent during the recording (its resets are the same ControlWatchdogTask)."""
     log = MethodLog()
     out: dict[str, list[str]] = {}
     with SimDaq(StandInBench(ScaledClock(1000.0)), interceptors=[log]) as sim:
@@ -62,6 +64,10 @@ def record_calls() -> dict[str, list[str]]:
             rig.read_block(100)
             rig.stop()
         out["continuous"] = log.take()
+        with DaqRig(grpc_target=sim.address, watchdog_s=1e6) as rig:
+            rig.watchdog.pet()
+            rig.drive_readback_V()
+        out["watchdog"] = log.take()
     return out
 
 
@@ -70,7 +76,7 @@ def write_reference() -> None:
     ref = {
         "nidaqmx_version": version("nidaqmx"),
         "generated_by": REGENERATE,
-        "methods": sorted(set(calls["finite"]) | set(calls["continuous"])),
+        "methods": sorted(set().union(*calls.values())),
         **calls,
     }
     DATA.parent.mkdir(parents=True, exist_ok=True)
@@ -87,7 +93,7 @@ def test_pinned_nidaqmx_version() -> None:
 def test_grpc_methods_match_the_recording() -> None:
     ref = json.loads(DATA.read_text())
     got = record_calls()
-    for run in ("finite", "continuous"):
+    for run in ("finite", "continuous", "watchdog"):
         new, gone = set(got[run]) - set(ref[run]), set(ref[run]) - set(got[run])
         assert got[run] == ref[run], (
             f"{run} run: nidaqmx now calls {sorted(new)} and no longer calls {sorted(gone)} "
