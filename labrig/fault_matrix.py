@@ -37,6 +37,7 @@ from labrig.store import SessionReader, SessionWriter
 from protocols import registry
 
 HOLD_S = 120.0  # rig seconds of the 1 V hold (120 ms of wall time at 1000x)
+WATCHDOG_SLACK_WALL_S = 0.25  # the simulated watchdog's own thread may run this late on a loaded host
 HOLD_AT_S = 40.0  # rig seconds into the record when a hold fault is injected
 
 # instrument -> fault kinds: the simulators' own (``inject``), then the limit and reading faults
@@ -55,17 +56,27 @@ def cells() -> list[tuple[str, str, str]]:
     return out + [("impedance", f, "eis") for f in FAULTS["impedance"]]
 
 
+SWEEP = {
+    "protocol": "paper-sweep", "rest_s": 0.0,
+    "clamp": {"pressures_kPa": [3062.0, 1837.0], "tolerance_N": 0.5, "hold_s": 2.0, "timeout_s": 60.0, "settle_s": 2.0},
+    "eis": {"f_start_Hz": 100.0, "f_stop_Hz": 1000.0, "points": 3, "ac_V": 0.01, "bias_V": 0.0},
+    "step": {"amplitude_V": 1.0, "on_s": HOLD_S, "off_s": 1.0, "fs_Hz": 200.0},
+}
+KINDS = ("clamp", "settle", "eis", "step")  # the steps of each pressure the matrix keeps
+
+
+class _MatrixProtocol(registry.LoadedProtocol):
+    """The paper sweep above with only clamp, settle, EIS and the hold at each pressure (six steps: a cell's
+    session layout is a third of the full sweep's)."""
+
+    def plan(self, clamp_area_m2: float) -> list[Any]:
+        return [s for s in super().plan(clamp_area_m2) if s.kind in KINDS]
+
+
 def protocol() -> registry.LoadedProtocol:
-    """Two pressures of a short paper sweep: clamp, settle, EIS, a ``HOLD_S`` 1 V hold, a harmonic, two sine lines."""
-    return registry.from_dict({
-        "protocol": "paper-sweep", "rest_s": 0.0,
-        "clamp": {"pressures_kPa": [3062.0, 1837.0], "tolerance_N": 0.5, "hold_s": 2.0, "timeout_s": 60.0, "settle_s": 2.0},
-        "eis": {"f_start_Hz": 100.0, "f_stop_Hz": 1000.0, "points": 3, "ac_V": 0.01, "bias_V": 0.0},
-        "step": {"amplitude_V": 1.0, "on_s": HOLD_S, "off_s": 1.0, "fs_Hz": 200.0},
-        "harmonic": {"amplitude_V": 1.0, "frequency_Hz": 2.0, "cycles": 3.0, "fs_Hz": 200.0},
-        "stepped_sine": {"amplitude_V": 0.5, "f_start_Hz": 5.0, "f_stop_Hz": 10.0, "points": 2, "settle_cycles": 1.0,
-                         "settle_min_s": 0.5, "measure_cycles": 2.0, "min_record_s": 0.5},
-    }, "fault matrix")
+    """At two pressures: clamp, settle, a 3-point EIS and a ``HOLD_S`` 1 V hold."""
+    p = registry.from_dict(SWEEP, "fault matrix")
+    return _MatrixProtocol(p.name, p.config, p.source)
 
 
 @dataclass
@@ -76,6 +87,7 @@ class Cell:
     result: RunResult | None = None
     problems: list[str] = field(default_factory=list)
     ao_V: float | None = None  # the simulated AO after the run (None: not asked)
+    watchdog_rig_s: float | None = None  # link lost: rig seconds from the loss to 0 V on the AO (the DAQ's watchdog)
     in_flight: str = ""  # the step that failed, and the rows it kept
     wall_s: float = 0.0
 
@@ -101,6 +113,16 @@ def _injector(sims: Any, rig: Any, instrument: str, fault: str) -> Callable[[], 
     if instrument == "clamp" and fault == "error":  # the clamp simulator answers ER,.. on it but does not list it
         return lambda: setattr(sims.clamp, "fault", "error")
     return lambda: getattr(sims, instrument).inject(fault)
+
+
+def wait_for_zero(sims: Any, clock: Any, until_rig_s: float) -> float | None:
+    """Rig time at which the simulated AO first reads 0 V, polled until rig time ``until_rig_s`` (None: never)."""
+    while True:
+        if sims.daq.ao_output_V() == 0.0:
+            return clock.now()
+        if clock.now() > until_rig_s:
+            return None
+        time.sleep(0.001)
 
 
 class _DriveWatch:
@@ -135,8 +157,16 @@ def run_cell(instrument: str, fault: str, phase: str, out_dir: Path, time_scale:
     w0 = time.monotonic()
     proto = protocol()
     with simulated_rig(time_scale=time_scale, safety=SAFETY.get(fault)) as (rig, sims):
-        inject = _injector(sims, rig, instrument, fault)
+        injected: dict[str, float] = {}
+        do_inject = _injector(sims, rig, instrument, fault)
+
+        def inject() -> None:
+            injected["t"] = rig.clock.now()
+            do_inject()
+
         watch = _DriveWatch(sims.daq.device)
+        wd = getattr(rig.daq, "watchdog", None)
+        wd_timeout = None if wd is None else float(wd.timeout_s)
         writer = SessionWriter(path)
         runner = Runner(rig, proto, [writer])
         steps = runner.plan()
@@ -160,9 +190,10 @@ def run_cell(instrument: str, fault: str, phase: str, out_dir: Path, time_scale:
             t.join(timeout=5.0)
         if not (instrument == "daq" and fault == "disconnect"):
             cell.ao_V = sims.daq.ao_output_V()
-        elif hasattr(sims.daq, "watchdog_s"):  # a simulated DAQ with a watchdog: it must have expired by now
-            time.sleep(float(getattr(sims.daq, "watchdog_s")) / time_scale * 1.5 + 0.05)
+        elif wd_timeout is not None and "t" in injected:  # the link is gone: the DAQ's own watchdog must act
+            t_zero = wait_for_zero(sims, rig.clock, injected["t"] + wd_timeout + WATCHDOG_SLACK_WALL_S * time_scale)
             cell.ao_V = sims.daq.ao_output_V()
+            cell.watchdog_rig_s = None if t_zero is None else t_zero - injected["t"]
     cell.wall_s = time.monotonic() - w0
     cell.problems = judge(cell, path, steps, target_i)
     return cell
