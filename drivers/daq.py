@@ -225,8 +225,9 @@ class DaqRig:
 
     def _scale(self, raw: np.ndarray, first: int) -> dict[str, np.ndarray]:
         n = raw.shape[1]
-        return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
-                "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
+        with np.errstate(invalid="ignore", over="ignore"):  # a bad gain gives NaN/inf: the caller's limits say so
+            return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
+                    "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
 
     def _check_drive(self, drive_V: Any) -> np.ndarray:
         drive = np.ascontiguousarray(drive_V, dtype=float).ravel()

@@ -19,7 +19,7 @@ from typing import Any, Iterable
 
 import numpy as np
 
-from drivers.errors import InstrumentError, Overload
+from drivers.errors import InstrumentError, InstrumentErrorReply, Overload
 from drivers.impedance_analyzer import estimate_sweep_s
 from drivers.transcript import Transcript as DriverTranscript
 from labrig import __version__
@@ -85,6 +85,7 @@ class Runner:
         self.steps: list[Step] = []
         self._inflight: dict[str, Any] = {}  # what the step in flight has stored so far (for its StepEnd)
         self._recording = threading.Event()  # a record is streaming: its loop checks the force logger per block
+        self._wd_failures = self._watchdog_failures()  # the DAQ watchdog's failed resets when the run began
 
     # ------------------------------------------------------------------------------ events
     def emit(self, ev: Event) -> None:
@@ -170,6 +171,9 @@ class Runner:
         logger.start()
         try:
             summary = self._act(index, step.action, logger)
+        except BaseException:
+            self.rig.safe()  # 0 V first, before the force logger's last rows are written (run() verifies again)
+            raise
         finally:
             logger.stop()  # an error already on its way up is not replaced by the logger's
         logger.raise_if_tripped()
@@ -212,11 +216,22 @@ class Runner:
         check_impedance(z)  # stored first: an overloaded spectrum is still what was measured
         return {"points": int(f.size), "z_min_ohm": float(np.min(np.abs(z)))}
 
+    def _watchdog_failures(self) -> int:
+        wd = getattr(self.rig.daq, "watchdog", None)
+        return 0 if wd is None else int(wd.failed_resets)
+
+    def _check_watchdog(self) -> None:
+        """A watchdog reset the card refused: it may cut the drive at any moment (or has): a DAQ fault."""
+        n = self._watchdog_failures() - self._wd_failures
+        if n > 0:
+            raise InstrumentErrorReply(self.rig.daq.name, f"the drive's watchdog could not be reset ({n} failure(s)): the card may cut the drive")
+
     def _record(self, index: int, a: Record, logger: "_ForceLogger") -> dict[str, Any]:
         """Stream the record block by block: each block is checked against the limits as it arrives (a trip
         puts 0 V out before the block is stored) and stored within ``EMIT_WALL_S``; a fault keeps every row read."""
         rig = self.rig
         laser_before = check_laser(rig.laser.read_displacement())
+        self._check_watchdog()
         emitter = _BlockEmitter(self, index)
         i_peak = d_peak = 0.0
         self._recording.set()
@@ -227,6 +242,7 @@ class Runner:
                     try:
                         check_daq_block(block, rig.limits)
                         logger.raise_if_tripped()
+                        self._check_watchdog()
                     except BaseException:
                         stream.close()  # 0 V on the drive first (the stream aborts when closed early)...
                         emitter.add(block)  # ...then the rows that showed the fault are kept
