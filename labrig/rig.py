@@ -131,6 +131,7 @@ STALE_WALL_S = 0.05  # ... never fewer wall seconds (the host's scheduling: 50 r
 STALE_GRACE_WALL_S = 0.2  # ... and a stream that looks stale gets this long to show a frame (a stalled process)
 REPLY_RIG_S = 5.0  # an ordinary instrument reply may take this many rig seconds...
 REPLY_WALL_S = 0.5  # ... never fewer wall seconds (a TCP/VISA round trip on a loaded host)
+SERIAL_REPLY_RIG_S = 0.5  # a serial instrument (laser, clamp motor) answers a short command within this
 
 
 def rig_timeout(clock: ScaledClock, rig_s: float, floor_wall_s: float) -> float:
@@ -266,12 +267,14 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
         analyzer = ImpedanceAnalyzer(ins.impedance.address, transcript=tr, timeout_s=rig_timeout(clock, REPLY_RIG_S, REPLY_WALL_S),
                                      sweep_timeout_s=rig_timeout(clock, 600.0, REPLY_WALL_S))
         opened.append(analyzer)
-        laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr)
+        serial_s = rig_timeout(clock, SERIAL_REPLY_RIG_S, REPLY_WALL_S)
+        laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr, timeout_s=serial_s)
         opened.append(laser)
         loadcell = LoadCell(ins.loadcell.address, transcript=tr, clock=clock, grace_wall_s=STALE_GRACE_WALL_S,
                             stale_s=max(STALE_RIG_S, STALE_WALL_S * clock.time_scale))
         opened.append(loadcell)
-        clamp = MotorClamp(ins.clamp.address, transcript=tr, max_force_N=cfg.safety.max_force_N) if ins.clamp.mode == "motor" else OperatorClamp()
+        clamp = (MotorClamp(ins.clamp.address, transcript=tr, timeout_s=serial_s, max_force_N=cfg.safety.max_force_N)
+                 if ins.clamp.mode == "motor" else OperatorClamp())
         return Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp, tr)
     except BaseException:
         for dev in reversed(opened):
