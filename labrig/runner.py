@@ -224,6 +224,9 @@ class Runner:
         """A watchdog reset the card refused: it may cut the drive at any moment (or has): a DAQ fault."""
         n = self._watchdog_failures() - self._wd_failures
         if n > 0:
+            if getattr(self.rig.daq.watchdog, "expired_seen", False):  # the record would go on with no drive
+                raise InstrumentErrorReply(self.rig.daq.name, "the drive's watchdog expired (the host was too slow to "
+                                           "reset it): the card cut the drive to 0 V")
             raise InstrumentErrorReply(self.rig.daq.name, f"the drive's watchdog could not be reset ({n} failure(s)): the card may cut the drive")
 
     def _record(self, index: int, a: Record, logger: "_ForceLogger") -> dict[str, Any]:
