@@ -256,8 +256,8 @@ class DaqRig:
         """``run_finite`` block by block, each yielded as soon as the card has acquired it.
 
         ``block_s``: rig seconds per block (default ``BLOCK_S``, at least ``BLOCK_WALL_S`` wall seconds).
-        Each read may wait the block's duration plus ``READ_MARGIN_S`` rig seconds (``timeout_s``, if
-        given, bounds the whole record). A caller that stops iterating early (a limit tripped) or an error
+        Each read may wait the block's duration plus ``READ_MARGIN_S`` rig seconds (or ``timeout_s`` rig
+        seconds, if given). A caller that stops iterating early (a limit tripped) or an error
         leaves 0 V on the drive. The transcript holds the whole record as one ``run_finite`` exchange,
         written once it completes, so a replay answers it whatever the block size.
         """
