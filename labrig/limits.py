@@ -17,6 +17,7 @@ from labrig.errors import SafetyTrip
 
 OVERLOAD_OHM = 9.9e37  # SCPI analysers print 9.9E37 for an overloaded point
 GARBLED_MIN_BYTES = 64  # a stray partial line at connect is not a garbled stream
+GARBLED_WINDOW_FRAMES = 10  # judged over windows of this many valid frames (a long clean hold must not hide it)
 DRIVE_SLACK_V = 0.05  # the drive read back may exceed max_drive_V by AI noise and gain error, not more
 DAQ_COLUMNS = {"v_V": "drive voltage", "i_A": "current", "disp_m": "displacement"}
 

@@ -25,7 +25,7 @@ from drivers.transcript import Transcript as DriverTranscript
 from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
 from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
-from labrig.limits import check_daq_block, check_force, check_impedance, check_laser, check_stream
+from labrig.limits import GARBLED_WINDOW_FRAMES, check_daq_block, check_force, check_impedance, check_laser, check_stream
 from labrig.rig import REPLY_RIG_S, REPLY_WALL_S, Rig, rig_timeout
 from protocols.registry import LoadedProtocol
 from protocols.steps import Impedance, Record, SetClamp, Settle, Step, peak_drive
@@ -305,7 +305,7 @@ class _ForceLogger:
         self._seq = 0
         self._last: int | None = None  # sequence number of the last frame looked at
         self._raised = False
-        self._base = (0, 0)  # (frame seq, unparseable bytes) when the step began
+        self._base = (0, 0)  # (frame seq, unparseable bytes) when the present garble window began
 
     def start(self) -> None:
         self._sample()
@@ -319,6 +319,8 @@ class _ForceLogger:
             if self._last is None:
                 self._base = (newest.seq, lc.bytes_skipped)
             check_stream(newest.seq - self._base[0], lc.bytes_skipped - self._base[1], len(newest.raw), lc.name)
+            if newest.seq - self._base[0] >= GARBLED_WINDOW_FRAMES:  # a new window
+                self._base = (newest.seq, lc.bytes_skipped)
             frames = lc.frames_since(newest.seq - 1 if self._last is None else self._last)
             if not frames:
                 return  # nothing new since the last look: nothing to log
