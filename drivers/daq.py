@@ -12,9 +12,12 @@ trigger on ``/<device>/ai/StartTrigger``, written and started first (it arms and
 AI task then starts both on the same sample clock edge, so sample k of the drive and of every input
 belong to the same instant.
 
-Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive.
+Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive;
+``drive_readback_V()`` reads the drive back through ``voltage_channel`` so a caller can verify it.
+Timeouts are seconds of the rig's clock (``time_scale`` rig seconds per wall second; 1 on a real bench),
+never shorter than ``wall_floor_s`` wall seconds (the host's and the transport's own latency).
 With ``watchdog_s`` the device's own watchdog timer puts 0 V out when this host stops resetting it
-(``drivers.daq_watchdog``); ``drive_readback_V()`` reads the drive back. Timeouts are wall seconds. Every call can be recorded into a ``Transcript`` and replayed without hardware.
+(``drivers.daq_watchdog``). Every call can be recorded into a ``Transcript`` and replayed without hardware.
 """
 
 from __future__ import annotations
@@ -47,6 +50,9 @@ TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-un
 GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
 WATCHDOG_EXPIRED_WRITE = -200678  # DAQmxErrors.WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED
 GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
+BLOCK_S = 0.25  # rig seconds per streamed block of a finite record: how late a limit check can be at 1x
+BLOCK_WALL_S = 0.002  # ... but never fewer wall seconds than this (a read costs ~1 ms: a 1000x bench)
+READ_MARGIN_S = 2.0  # rig seconds a block may come late before the read times out
 CHANNEL_OPTIONS = [
     ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
     ("grpc.max_send_message_length", -1),
@@ -83,6 +89,7 @@ class DaqRig:
         replay: CallReplayer | None = None,
         watchdog_s: float | None = None,
         time_scale: float = 1.0,
+        wall_floor_s: float = 0.01,
     ):
         self.device, self.grpc_target, self.name = device, grpc_target, name
         self.drive_channel = drive_channel
@@ -90,6 +97,7 @@ class DaqRig:
         self.current_gain_A_per_V, self.displacement_m_per_V = float(current_gain_A_per_V), float(displacement_m_per_V)
         self.ai_range_V, self.ao_range_V = float(ai_range_V), float(ao_range_V)
         self.transcript, self._replay = transcript, replay
+        self.time_scale, self.wall_floor_s = float(time_scale), float(wall_floor_s)
         self._channel: grpc.Channel | None = None
         self._interpreter: GrpcStubInterpreter | None = None
         if grpc_target is not None and replay is None:
@@ -168,6 +176,15 @@ class DaqRig:
         handle, close_on_exit = self._interpreter.create_task(tname)
         return _TaskAlternateConstructor(handle, self._interpreter, close_on_exit)
 
+    def _wall(self, rig_s: float) -> float:
+        """A timeout of ``rig_s`` rig seconds as the wall seconds nidaqmx waits."""
+        return max(rig_s / self.time_scale, self.wall_floor_s)
+
+    @property
+    def replaying(self) -> bool:
+        """True when the rig answers from a recording (no hardware: nothing to make safe or read back)."""
+        return self._replay is not None
+
     def _phys(self, ch: str) -> str:
         return f"{self.device}/{ch}"
 
@@ -209,8 +226,9 @@ class DaqRig:
 
     def _scale(self, raw: np.ndarray, first: int) -> dict[str, np.ndarray]:
         n = raw.shape[1]
-        return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
-                "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
+        with np.errstate(invalid="ignore", over="ignore"):  # a bad gain gives NaN/inf: the caller's limits say so
+            return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
+                    "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
 
     def _check_drive(self, drive_V: Any) -> np.ndarray:
         drive = np.ascontiguousarray(drive_V, dtype=float).ravel()
@@ -227,33 +245,63 @@ class DaqRig:
 
     # ------------------------------------------------------------------------------ public API
     def run_finite(self, drive_V: np.ndarray, fs: float, timeout_s: float | None = None) -> dict[str, np.ndarray]:
-        """Put ``drive_V`` out at ``fs`` and record the 3 inputs over the same samples.
+        """Put ``drive_V`` out at ``fs`` and record the 3 inputs over the same samples (``stream_finite`` whole).
 
         Returns SI arrays ``t_s`` (from the first sample), ``voltage_V``, ``current_A``, ``displacement_m``.
         """
+        blocks = list(self.stream_finite(drive_V, fs, timeout_s=timeout_s))
+        return {k: np.concatenate([b[k] for b in blocks]) for k in KEYS}
+
+    def stream_finite(self, drive_V: np.ndarray, fs: float, block_s: float | None = None,
+                      timeout_s: float | None = None) -> Iterator[dict[str, np.ndarray]]:
+        """``run_finite`` block by block, each yielded as soon as the card has acquired it.
+
+        ``block_s``: rig seconds per block (default ``BLOCK_S``, at least ``BLOCK_WALL_S`` wall seconds).
+        Each read may wait the block's duration plus ``READ_MARGIN_S`` rig seconds (or ``timeout_s`` rig
+        seconds, if given). A caller that stops iterating early (a limit tripped) or an error
+        leaves 0 V on the drive. The transcript holds the whole record as one ``run_finite`` exchange,
+        written once it completes, so a replay answers it whatever the block size.
+        """
         drive = self._check_drive(drive_V)
         fs, n = float(fs), len(drive)
-        timeout = float(timeout_s) if timeout_s is not None else n / fs + 10.0
         args = {"fs": fs, "n": n, "drive_sha256": _digest(drive), **self._settings()}
-
-        def run() -> bytes:
-            self._release()
-            try:
+        block_rig = max(BLOCK_S if block_s is None else float(block_s), BLOCK_WALL_S * self.time_scale)
+        per = max(1, min(n, int(round(block_rig * fs))))
+        if self._replay is not None:
+            out = self._unpack(self._replay.call("run_finite", args))
+            for a in range(0, n, per):
+                yield {k: v[a : a + per] for k, v in out.items()}
+            return
+        total_wall = None if timeout_s is None else self._wall(float(timeout_s))
+        parts: list[dict[str, np.ndarray]] = []
+        done = False
+        self._release()
+        try:
+            with self._errors("run_finite"):
+                self._fs = fs
+                ao = self._setup(fs, AcquisitionType.FINITE, n, drive, self._wall(n / fs + READ_MARGIN_S))
+                assert self._reader is not None and ao is not None
+            pos = 0
+            while pos < n:
+                k = min(per, n - pos)
+                raw = np.zeros((3, k))
+                wait = self._wall(k / fs + READ_MARGIN_S) if total_wall is None else total_wall
                 with self._errors("run_finite"):
-                    self._fs = fs
-                    ao = self._setup(fs, AcquisitionType.FINITE, n, drive, timeout)
-                    raw = np.zeros((3, n))
-                    assert self._reader is not None and ao is not None
-                    self._reader.read_many_sample(raw, n, timeout=timeout)
-                    ao.wait_until_done(timeout=timeout)
-            except BaseException:
-                self.abort()  # 0 V on the drive before the error goes up
-                raise
-            self._release()  # the output now holds the drive's last sample
-            out = self._scale(raw, 0)
-            return to_bytes(*(out[k] for k in KEYS))
-
-        return self._unpack(self._call("run_finite", args, run))
+                    self._reader.read_many_sample(raw, k, timeout=wait)
+                block = self._scale(raw, pos)
+                parts.append(block)
+                pos += k
+                yield block
+            with self._errors("run_finite"):
+                ao.wait_until_done(timeout=self._wall(READ_MARGIN_S))
+            done = True
+        finally:
+            if not done:
+                self.abort()  # an error, or the caller stopped early: 0 V on the drive before anything else
+        self._release()  # the output now holds the drive's last sample
+        if self.transcript is not None:
+            whole = {k: np.concatenate([p[k] for p in parts]) for k in KEYS}
+            self.transcript.add(self.name, "call", payload=to_bytes(*(whole[k] for k in KEYS)), method="run_finite", args=args)
 
     def start_continuous(self, fs: float, drive_block: np.ndarray | None = None, buffer_s: float = 10.0) -> None:
         """Start continuous acquisition at ``fs``; AO regenerates ``drive_block`` (else the drive is left as is)."""
@@ -265,7 +313,7 @@ class DaqRig:
             self._release()
             try:
                 with self._errors("start_continuous"):
-                    self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, 10.0)
+                    self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, self._wall(10.0))
             except BaseException:
                 self.abort()
                 raise
@@ -275,7 +323,9 @@ class DaqRig:
         self._call("start_continuous", args, run)
 
     def read_block(self, n: int, timeout_s: float = 10.0) -> dict[str, np.ndarray]:
-        """The next ``n`` samples per channel of the continuous acquisition (contiguous with the last block)."""
+        """The next ``n`` samples per channel of the continuous acquisition (contiguous with the last block).
+
+        ``timeout_s`` is rig seconds."""
         n = int(n)
 
         def run() -> bytes:
@@ -284,7 +334,7 @@ class DaqRig:
             raw = np.zeros((3, n))
             try:
                 with self._errors("read_block"):
-                    self._reader.read_many_sample(raw, n, timeout=timeout_s)
+                    self._reader.read_many_sample(raw, n, timeout=self._wall(timeout_s))
             except BaseException:
                 self.abort()
                 raise
@@ -315,7 +365,7 @@ class DaqRig:
                 task.ao_channels.add_ao_voltage_chan(self._phys(self.drive_channel), min_val=-self.ao_range_V,
                                                      max_val=self.ao_range_V)
                 try:
-                    AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=10.0)
+                    AnalogSingleChannelWriter(task.out_stream, auto_start=True).write_one_sample(0.0, timeout=self._wall(10.0))
                 except DaqError as e:  # our watchdog expired: the device holds the drive at its 0 V expiration state
                     if not (self.watchdog is not None and e.error_code == WATCHDOG_EXPIRED_WRITE):
                         raise
@@ -388,27 +438,28 @@ class DaqRig:
 
     def drive_readback_V(self, n: int = 20, fs: float = 1000.0, timeout_s: float = 10.0) -> float:
         """The drive as the strip sees it: the mean of ``n`` samples of the voltage AI channel (releases what
-        runs first). Raises ``Disconnected`` etc. when it cannot be read: then the drive state is unknown."""
+        runs first). Raises ``Disconnected`` etc. when it cannot be read: then the drive state is unknown.
+
+        ``timeout_s`` is rig seconds. Not recorded in the transcript (like ``abort``): it is the safety check
+        after a run or a fault, not protocol traffic, and a replay has no drive to read (it raises)."""
         n, fs = int(n), float(fs)
-
-        def run() -> bytes:
-            self._release()
-            with self._errors("drive_readback_V"):
-                task = self._new_task("readback")
-                try:
-                    task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
-                                                         max_val=self.ai_range_V)
-                    task.timing.cfg_samp_clk_timing(fs, sample_mode=AcquisitionType.FINITE, samps_per_chan=n)
-                    reader = AnalogSingleChannelReader(task.in_stream)
-                    reader.verify_array_shape = False
-                    raw = np.zeros(n)
-                    task.start()
-                    reader.read_many_sample(raw, n, timeout=timeout_s)
-                finally:
-                    self._release()
-            return to_bytes(np.array([raw.mean()]))
-
-        return float(np.frombuffer(self._call("drive_readback_V", {"n": n, "fs": fs}, run), dtype="<f8")[0])
+        if self._replay is not None:
+            raise InstrumentErrorReply(self.name, "drive_readback_V: a replayed rig has no drive to read")
+        self._release()
+        with self._errors("drive_readback_V"):
+            task = self._new_task("readback")
+            try:
+                task.ai_channels.add_ai_voltage_chan(self._phys(self.ai_channels[0]), min_val=-self.ai_range_V,
+                                                     max_val=self.ai_range_V)
+                task.timing.cfg_samp_clk_timing(fs, sample_mode=AcquisitionType.FINITE, samps_per_chan=n)
+                reader = AnalogSingleChannelReader(task.in_stream)
+                reader.verify_array_shape = False
+                raw = np.zeros(n)
+                task.start()
+                reader.read_many_sample(raw, n, timeout=self._wall(n / fs + timeout_s))
+            finally:
+                self._release()
+        return float(raw.mean())
 
     def describe(self) -> str:
         """One line for the session file: where and how the rig is wired."""

@@ -20,7 +20,13 @@ Commands (assumed, indicator-specific; see docs/instruments_serial.md): ``Z\\r\\
 A reader thread (``background=True``) keeps the newest frame; with ``background=False`` the stream is
 parsed on demand from what the port already holds (deterministic, used for replay). Bytes that do
 not form a frame are skipped up to the next line end; ``force()`` raises ``StaleStream`` when no frame came
-for ``stale_s`` wall seconds (``MalformedReply`` if only garbage came) and ``Overload`` on ``OL``.
+for ``stale_s`` seconds (``MalformedReply`` if only garbage came) and ``Overload`` on ``OL``.
+
+Time: with ``clock`` (the rig's clock) every frame is stamped, and ``stale_s`` and the command
+confirmations are counted, in rig seconds (a 1000x simulated bench included); without one, in
+``time.monotonic()`` seconds. ``Frame.t_wall`` then holds the rig time of the frame. A stream that
+looks stale is given ``grace_wall_s`` wall seconds for a fresh frame first (the reader thread may
+just not have run: a loaded host stalls the whole process, and at 1000x a 50 ms stall is 50 rig s).
 """
 
 from __future__ import annotations
@@ -57,6 +63,16 @@ class Clock(Protocol):
     def now(self) -> float: ...
 
     def sleep(self, seconds: float) -> None: ...
+
+
+class _Monotonic:
+    """The driver's own clock when the rig gives none: wall seconds."""
+
+    time_scale = 1.0
+
+    @staticmethod
+    def now() -> float:
+        return time.monotonic()
 
 
 @dataclass(frozen=True)
@@ -111,9 +127,14 @@ class LoadCell(SerialInstrument):
         background: bool = True,
         baudrate: int | None = None,
         max_line: int = 64,
+        clock: Clock | None = None,
+        grace_wall_s: float = 0.0,
     ):
         super().__init__(port, name=name, transcript=transcript, timeout_s=timeout_s, baudrate=baudrate)
         self.stale_s, self.max_line = stale_s, max_line
+        self.grace_wall_s = grace_wall_s
+        self.clock = clock or _Monotonic()
+        self._scale = float(getattr(self.clock, "time_scale", 1.0))
         self._cond = threading.Condition()
         self._partial = bytearray()
         self._skip_lf = False
@@ -123,7 +144,7 @@ class LoadCell(SerialInstrument):
         self._garbage_n = 0
         self.bytes_skipped = 0  # total unparseable bytes (diagnostics)
         self._error: InstrumentError | None = None
-        self._t_open = time.monotonic()
+        self._t_open = self.clock.now()
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         if background:
@@ -167,7 +188,7 @@ class LoadCell(SerialInstrument):
 
     def _feed(self, chunk: bytes) -> None:
         """Split the stream into lines ended by CR LF, CR alone (A&D's other terminator) or LF, and parse each."""
-        now = time.monotonic()
+        now = self.clock.now()
         with self._cond:
             self._partial += chunk
             while True:
@@ -205,25 +226,33 @@ class LoadCell(SerialInstrument):
             self._garbage += data[: 32 - len(self._garbage)]
 
     # -- readings --------------------------------------------------------------------------------
-    def _wait_frame(self, after_seq: int, wall_s: float) -> None:
-        """Wait up to ``wall_s`` for a frame newer than ``after_seq`` (returns early on error)."""
+    def _wait_frame(self, after_seq: int, clock_s: float) -> None:
+        """Wait up to ``clock_s`` (seconds of ``clock``) for a frame newer than ``after_seq`` (returns early on error)."""
         if self._thread is None:
             self.pump()
             return
         with self._cond:
-            self._cond.wait_for(lambda: self._seq > after_seq or self._error is not None, timeout=wall_s)
+            self._cond.wait_for(lambda: self._seq > after_seq or self._error is not None, timeout=clock_s / self._scale)
 
     def latest(self) -> Frame:
         """The newest frame; raises if the stream is dead, stale, garbled or overloaded."""
         if self._seq == 0:
-            self._wait_frame(0, max(0.0, self._t_open + self.stale_s - time.monotonic()))
+            self._wait_frame(0, max(0.0, self._t_open + self.stale_s - self.clock.now()))
         else:
             self.pump()
         with self._cond:
             if self._error is not None:
                 raise self._error
             frame = self._frames[-1] if self._frames else None
-            age = time.monotonic() - (frame.t_wall if frame else self._t_open)
+            age = self.clock.now() - (frame.t_wall if frame else self._t_open)
+            if (frame is None or age > self.stale_s) and self._thread is not None and self.grace_wall_s > 0:
+                # a host that stalled this whole process stalled the reader too: let it catch up first
+                seq = self._seq
+                self._cond.wait_for(lambda: self._seq > seq or self._error is not None, timeout=self.grace_wall_s)
+                if self._error is not None:
+                    raise self._error
+                frame = self._frames[-1] if self._frames else None
+                age = self.clock.now() - (frame.t_wall if frame else self._t_open)
             if frame is None or age > self.stale_s:
                 if self._garbage_n:
                     raise MalformedReply(
@@ -243,6 +272,11 @@ class LoadCell(SerialInstrument):
     def _frames_after(self, seq: int) -> list[Frame]:
         with self._cond:
             return [f for f in self._frames if f.seq > seq]
+
+    def frames_since(self, seq: int) -> list[Frame]:
+        """Every frame still held that is newer than ``seq`` (a logger keeps each frame once, never the same twice)."""
+        self.pump()
+        return self._frames_after(seq)
 
     def wait_stable(
         self, target_N: float, tol_N: float, hold_s: float, timeout_s: float, clock: Clock, poll_s: float = 0.05
@@ -280,11 +314,11 @@ class LoadCell(SerialInstrument):
         self._write(cmd.request() + b"\r\n")
         if confirm_s is None:
             return
-        deadline = time.monotonic() + confirm_s
+        deadline = self.clock.now() + confirm_s
         while not any(confirmed(f) for f in self._frames_after(seq0)):
             if self._error is not None:
                 raise self._error
-            left = deadline - time.monotonic()
+            left = deadline - self.clock.now()
             if left <= 0:
                 raise InstrumentTimeout(self.name, f"{cmd.name} ({cmd.template}) not confirmed by the stream within {confirm_s:g} s")
             if self._thread is not None:
@@ -293,7 +327,7 @@ class LoadCell(SerialInstrument):
                 before = self._seq
                 self.pump()
                 if self._seq == before:
-                    time.sleep(min(left, 0.005))
+                    time.sleep(min(left / self._scale, 0.005))
 
     def zero(self, confirm_s: float | None = 1.0) -> None:
         """Zero the gross reading; confirmed when a later frame reads within 2 counts of zero."""

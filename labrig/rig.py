@@ -128,6 +128,45 @@ def load_rig(path: str | Path) -> RigFile:
     return parse_rig(data, str(path))
 
 
+ZERO_TOL_V = 0.02  # |drive read back| at or below this is 0 V (AI noise ~0.1 mV, 16 bits over ±10 V: 0.3 mV)
+STALE_RIG_S = 2.0  # a load cell with no valid frame for this many rig seconds is a fault...
+STALE_WALL_S = 0.05  # ... never fewer wall seconds (the host's scheduling: 50 rig s on a 1000x bench)...
+STALE_GRACE_WALL_S = 0.2  # ... and a stream that looks stale gets this long to show a frame (a stalled process)
+REPLY_RIG_S = 5.0  # an ordinary instrument reply may take this many rig seconds...
+REPLY_WALL_S = 0.5  # ... never fewer wall seconds (a TCP/VISA round trip on a loaded host)
+SERIAL_REPLY_RIG_S = 0.5  # a serial instrument (laser, clamp motor) answers a short command within this
+
+
+def rig_timeout(clock: ScaledClock, rig_s: float, floor_wall_s: float) -> float:
+    """``rig_s`` seconds of the rig's clock as a wall-clock timeout, at least ``floor_wall_s``.
+
+    At 1x (a real bench) this is ``rig_s``; on a 1000x simulated bench the floor covers the host's own
+    latency, which the scaled clock does not slow down."""
+    return max(rig_s / clock.time_scale, floor_wall_s)
+
+
+@dataclass(frozen=True)
+class SafeState:
+    """What ``Rig.safe()`` achieved: the drive as read back (None: could not be read) and what failed."""
+
+    drive_V: float | None
+    problems: tuple[str, ...] = ()
+
+    @property
+    def verified(self) -> bool:
+        """The drive was read back at 0 V."""
+        return self.drive_V is not None and abs(self.drive_V) <= ZERO_TOL_V
+
+    def line(self) -> str:
+        """One phrase for the operator: the drive state, and what to do when it is not known to be 0 V."""
+        if self.verified:
+            return f"drive read back at {self.drive_V:+.3f} V"
+        if self.drive_V is None:
+            return ("drive state UNKNOWN (it could not be read back): check that the DAQ's watchdog put its output "
+                    "at 0 V, or switch off the amplifier")
+        return f"drive read back at {self.drive_V:+.3f} V, NOT 0 V: switch off the amplifier now"
+
+
 @dataclass
 class Rig:
     """Open drivers + clock + limits. ``safe()`` puts the drive at 0 V before anything else."""
@@ -169,15 +208,33 @@ class Rig:
             d["identity"] = {"error": str(exc)}
         return d
 
-    def safe(self) -> list[str]:
-        """Drive to 0 V first, then everything else safe. Never raises; returns what failed."""
+    def safe(self) -> SafeState:
+        """Drive to 0 V first, then everything else safe, then read the drive back. Never raises.
+
+        The drive counts as safe only when read back at 0 V (``SafeState.verified``): ``abort()``'s own
+        word is not enough, since a write to a dead link cannot be confirmed."""
         problems = []
-        for what, fn in (("daq", self.daq.abort), ("impedance", self.analyzer.safe)):
+        if not self.daq.abort():
+            problems.append("daq: could not write 0 V to the drive")
+        try:
+            self.analyzer.safe()
+        except Exception as exc:  # a dead instrument must not stop the others being made safe
+            problems.append(f"impedance: {exc}")
+        if self.daq.replaying:
+            return SafeState(0.0, tuple(problems))  # a replay drives nothing
+        try:
+            drive = self.daq.drive_readback_V()
+        except Exception as exc:
+            problems.append(f"daq: drive read-back failed: {exc}")
+            return SafeState(None, tuple(problems))
+        if abs(drive) > ZERO_TOL_V and not problems:  # written but not there: try once more, then say so
+            self.daq.abort()
             try:
-                fn()
-            except Exception as exc:  # a dead instrument must not stop the others being made safe
-                problems.append(f"{what}: {exc}")
-        return problems
+                drive = self.daq.drive_readback_V()
+            except Exception as exc:
+                problems.append(f"daq: drive read-back failed: {exc}")
+                return SafeState(None, tuple(problems))
+        return SafeState(drive, tuple(problems))
 
     def close(self) -> None:
         self.safe()
@@ -210,13 +267,18 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             time_scale=clock.time_scale,
         )
         opened.append(daq)
-        analyzer = analyser_models.open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr, sweep_timeout_s=600.0)
+        analyzer = analyser_models.open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr,
+                                                 timeout_s=rig_timeout(clock, REPLY_RIG_S, REPLY_WALL_S),
+                                                 sweep_timeout_s=rig_timeout(clock, 600.0, REPLY_WALL_S))
         opened.append(analyzer)
-        laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr)
+        serial_s = rig_timeout(clock, SERIAL_REPLY_RIG_S, REPLY_WALL_S)
+        laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr, timeout_s=serial_s)
         opened.append(laser)
-        loadcell = LoadCell(ins.loadcell.address, transcript=tr, stale_s=2.0)
+        loadcell = LoadCell(ins.loadcell.address, transcript=tr, clock=clock, grace_wall_s=STALE_GRACE_WALL_S,
+                            stale_s=max(STALE_RIG_S, STALE_WALL_S * clock.time_scale))
         opened.append(loadcell)
-        clamp = MotorClamp(ins.clamp.address, transcript=tr, max_force_N=cfg.safety.max_force_N) if ins.clamp.mode == "motor" else OperatorClamp()
+        clamp = (MotorClamp(ins.clamp.address, transcript=tr, timeout_s=serial_s, max_force_N=cfg.safety.max_force_N)
+                 if ins.clamp.mode == "motor" else OperatorClamp())
         return Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp, tr)
     except BaseException:
         for dev in reversed(opened):

@@ -1,31 +1,39 @@
 """The protocol runner: materialise the plan, validate it against the rig, run it, emit events.
 
 Safety: every drive and clamp force is checked against the rig's limits before anything moves; the
-current and the clamp force are checked while running. A trip, an instrument fault, a stop request or
-any exception puts the drive at 0 V first (``rig.safe()``), then records what happened. A first stop
-request (Ctrl-C, the live window's Stop button) ends the run at the next safe point; a second Ctrl-C
-raises KeyboardInterrupt at once and is handled the same way.
+current, the drive and the clamp force are checked while running, block by block as the DAQ delivers
+them (``labrig.limits``). A trip, an instrument fault, a stop request or any exception puts the drive
+at 0 V first (``rig.safe()``, which reads it back), then records what happened: the rows of the step in
+flight are kept and the step is marked failed with what was kept and why. A first stop request (Ctrl-C,
+the live window's Stop button) ends the run at the next safe point; a second Ctrl-C raises
+KeyboardInterrupt at once and is handled the same way. See docs/safety.md.
 """
 
 from __future__ import annotations
 
 import threading
+import time
+from contextlib import closing
 from dataclasses import dataclass, field
 from typing import Any, Iterable
 
 import numpy as np
 
-from drivers.errors import InstrumentError
+from drivers.errors import InstrumentError, InstrumentErrorReply, Overload
+from drivers.impedance_analyzer import estimate_sweep_s
 from drivers.transcript import Transcript as DriverTranscript
 from drivers.analyser_models import out_of_range
 from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
 from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
-from labrig.rig import Rig
+from labrig.limits import GARBLED_WINDOW_FRAMES, check_daq_block, check_force, check_impedance, check_laser, check_stream
+from labrig.rig import REPLY_RIG_S, REPLY_WALL_S, Rig, rig_timeout
 from protocols.registry import LoadedProtocol
 from protocols.steps import Impedance, Record, SetClamp, Settle, Step, peak_drive
 
-BLOCK_ROWS = 20000  # rows per data block of a record (what a crash can lose at most)
+BLOCK_ROWS = 20000  # rows per stored data block of a record at most
+EMIT_WALL_S = 0.02  # DAQ blocks read within this many wall seconds are stored as one (a 1000x bench reads
+# a block every ~2 ms; a real one every 0.25 s): what a kill -9 can lose at most. A fault stores them at once.
 
 
 @dataclass
@@ -35,6 +43,7 @@ class RunResult:
     reason: str
     exit_code: int
     steps_done: list[str] = field(default_factory=list)
+    drive: str = ""  # the drive's state as read back after the run (``SafeState.line()``)
 
 
 def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:
@@ -80,6 +89,9 @@ class Runner:
         self.stop_requested = threading.Event()
         self._emit_lock = threading.Lock()
         self.steps: list[Step] = []
+        self._inflight: dict[str, Any] = {}  # what the step in flight has stored so far (for its StepEnd)
+        self._recording = threading.Event()  # a record is streaming: its loop checks the force logger per block
+        self._wd_failures = self._watchdog_failures()  # the DAQ watchdog's failed resets when the run began
 
     # ------------------------------------------------------------------------------ events
     def emit(self, ev: Event) -> None:
@@ -141,14 +153,17 @@ class Runner:
         except BaseException as exc:
             status, reason, code = "fail", f"{type(exc).__name__}: {exc}", 1
         finally:
-            problems = self.rig.safe()  # 0 V on the drive before anything is written about it
-            if problems:
-                reason += "; while making safe: " + "; ".join(problems)
+            state = self.rig.safe()  # 0 V on the drive (read back) before anything is written about it
+            if state.problems:
+                reason += "; while making safe: " + "; ".join(state.problems)
+            if not state.verified and code == 0:
+                status, reason, code = "fail", "the drive could not be verified at 0 V after the run", 3
             if current is not None:
-                self.emit(StepEnd(self.uid, current, "aborted" if status == "abort" else "failed", self.rig.clock.now(), {"reason": reason}))
+                summary = {"reason": reason, **self._inflight}
+                self.emit(StepEnd(self.uid, current, "aborted" if status == "abort" else "failed", self.rig.clock.now(), summary))
             self._flush_transcripts()
             self.emit(RunStop(self.uid, status, reason, self.rig.clock.now()))
-        return RunResult(self.uid, status, reason, code, finished)
+        return RunResult(self.uid, status, reason, code, finished, state.line())
 
     def _flush_transcripts(self) -> None:
         tr = self.rig.transcript
@@ -157,22 +172,29 @@ class Runner:
 
     # ------------------------------------------------------------------------------ steps
     def _run_step(self, index: int, step: Step) -> dict[str, Any]:
+        self._inflight = {"rows_kept": {}}
         logger = _ForceLogger(self, index)
         logger.start()
         try:
-            a = step.action
-            if isinstance(a, SetClamp):
-                return self._clamp(a)
-            if isinstance(a, Settle):
-                return self._settle(a.duration_s, logger)
-            if isinstance(a, Impedance):
-                return self._impedance(index, a)
-            if isinstance(a, Record):
-                return self._record(index, a)
-            raise TypeError(f"unknown action {a!r}")
+            summary = self._act(index, step.action, logger)
+        except BaseException:
+            self.rig.safe()  # 0 V first, before the force logger's last rows are written (run() verifies again)
+            raise
         finally:
-            logger.stop()
-            logger.raise_if_tripped()
+            logger.stop()  # an error already on its way up is not replaced by the logger's
+        logger.raise_if_tripped()
+        return summary
+
+    def _act(self, index: int, a: Any, logger: "_ForceLogger") -> dict[str, Any]:
+        if isinstance(a, SetClamp):
+            return self._clamp(a)
+        if isinstance(a, Settle):
+            return self._settle(a.duration_s, logger)
+        if isinstance(a, Impedance):
+            return self._impedance(index, a)
+        if isinstance(a, Record):
+            return self._record(index, a, logger)
+        raise TypeError(f"unknown action {a!r}")
 
     def _clamp(self, a: SetClamp) -> dict[str, Any]:
         rig = self.rig
@@ -190,30 +212,93 @@ class Runner:
 
     def _impedance(self, index: int, a: Impedance) -> dict[str, Any]:
         an = self.rig.analyzer
+        # the sweep's wait in rig seconds: twice its generous estimate (plus a reply's), as wall seconds
+        an.sweep_timeout_s = rig_timeout(self.rig.clock, REPLY_RIG_S + 2.0 * estimate_sweep_s(np.array(a.freqs_Hz)), REPLY_WALL_S)
         an.configure_list(np.array(a.freqs_Hz), a.ac_V, a.bias_V)
         f, z = an.measure()
         cols = {"f_Hz": f, "z_re_ohm": z.real, "z_im_ohm": z.imag}
         self.emit(Block(self.uid, index, "eis", {k: np.ascontiguousarray(v, float) for k, v in cols.items()}))
+        self._inflight["rows_kept"]["eis"] = int(f.size)
+        check_impedance(z)  # stored first: an overloaded spectrum is still what was measured
         return {"points": int(f.size), "z_min_ohm": float(np.min(np.abs(z)))}
 
-    def _record(self, index: int, a: Record) -> dict[str, Any]:
+    def _watchdog_failures(self) -> int:
+        wd = getattr(self.rig.daq, "watchdog", None)
+        return 0 if wd is None else int(wd.failed_resets)
+
+    def _check_watchdog(self) -> None:
+        """A watchdog reset the card refused: it may cut the drive at any moment (or has): a DAQ fault."""
+        n = self._watchdog_failures() - self._wd_failures
+        if n > 0:
+            if getattr(self.rig.daq.watchdog, "expired_seen", False):  # the record would go on with no drive
+                raise InstrumentErrorReply(self.rig.daq.name, "the drive's watchdog expired (the host was too slow to "
+                                           "reset it): the card cut the drive to 0 V")
+            raise InstrumentErrorReply(self.rig.daq.name, f"the drive's watchdog could not be reset ({n} failure(s)): the card may cut the drive")
+
+    def _record(self, index: int, a: Record, logger: "_ForceLogger") -> dict[str, Any]:
+        """Stream the record block by block: each block is checked against the limits as it arrives (a trip
+        puts 0 V out before the block is stored) and stored within ``EMIT_WALL_S``; a fault keeps every row read."""
         rig = self.rig
-        laser_before = rig.laser.read_displacement()
-        out = rig.daq.run_finite(a.drive_V, a.fs_Hz)
-        i_peak = float(np.max(np.abs(out["current_A"])))
-        cols = {"t_s": out["t_s"], "v_V": out["voltage_V"], "i_A": out["current_A"], "disp_m": out["displacement_m"]}
-        # the data measured so far is stored before a trip is declared: nothing measured is lost
-        for k, start in enumerate(range(0, a.drive_V.size, BLOCK_ROWS)):
-            block = {c: np.ascontiguousarray(v[start : start + BLOCK_ROWS], float) for c, v in cols.items()}
-            self.emit(Block(self.uid, index, "daq", block, seq=k))
-        if i_peak > rig.limits.max_current_A:
-            raise SafetyTrip(f"current {i_peak:.3g} A exceeded safety.max_current_A = {rig.limits.max_current_A:g} A")
-        laser_after = rig.laser.read_displacement()
-        return {"i_peak_A": i_peak, "disp_peak_m": float(np.max(np.abs(out["displacement_m"]))), "laser_before_m": laser_before, "laser_after_m": laser_after}
+        laser_before = check_laser(rig.laser.read_displacement())
+        self._check_watchdog()
+        emitter = _BlockEmitter(self, index)
+        i_peak = d_peak = 0.0
+        self._recording.set()
+        try:
+            with closing(rig.daq.stream_finite(a.drive_V, a.fs_Hz)) as stream:
+                for out in stream:
+                    block = {"t_s": out["t_s"], "v_V": out["voltage_V"], "i_A": out["current_A"], "disp_m": out["displacement_m"]}
+                    try:
+                        check_daq_block(block, rig.limits)
+                        logger.raise_if_tripped()
+                        self._check_watchdog()
+                    except BaseException:
+                        stream.close()  # 0 V on the drive first (the stream aborts when closed early)...
+                        emitter.add(block)  # ...then the rows that showed the fault are kept
+                        emitter.flush()
+                        raise
+                    i_peak = max(i_peak, float(np.max(np.abs(block["i_A"]))))
+                    d_peak = max(d_peak, float(np.max(np.abs(block["disp_m"]))))
+                    emitter.add(block)
+        finally:
+            self._recording.clear()
+            emitter.flush()  # an instrument error mid-record: what was read is stored too
+        laser_after = check_laser(rig.laser.read_displacement())
+        return {"i_peak_A": i_peak, "disp_peak_m": d_peak, "laser_before_m": laser_before, "laser_after_m": laser_after}
+
+
+class _BlockEmitter:
+    """Collects a record's DAQ blocks and emits them as ``Block`` events every ``EMIT_WALL_S`` (or ``BLOCK_ROWS``)."""
+
+    def __init__(self, runner: Runner, index: int):
+        self.r, self.index = runner, index
+        self._parts: list[dict[str, np.ndarray]] = []
+        self._rows = self._seq = 0
+        self._since = time.monotonic()
+        runner._inflight["rows_kept"]["daq"] = 0
+
+    def add(self, block: dict[str, np.ndarray]) -> None:
+        self._parts.append(block)
+        self._rows += len(block["t_s"])
+        if self._rows >= BLOCK_ROWS or time.monotonic() - self._since >= EMIT_WALL_S:
+            self.flush()
+
+    def flush(self) -> None:
+        if self._parts:
+            cols = {c: np.ascontiguousarray(np.concatenate([p[c] for p in self._parts]), float) for c in self._parts[0]}
+            self._parts, self._rows = [], 0
+            self.r.emit(Block(self.r.uid, self.index, "daq", cols, seq=self._seq))
+            self._seq += 1
+            kept = self.r._inflight["rows_kept"]
+            kept["daq"] = kept.get("daq", 0) + len(cols["t_s"])
+            self.r._inflight["kept_until_s"] = float(cols["t_s"][-1])
+        self._since = time.monotonic()
 
 
 class _ForceLogger:
-    """Reads the load cell through the whole step and emits ``force`` blocks; trips on over-force."""
+    """Logs each new load-cell frame once (at most ``force_rate_Hz``) as ``force`` blocks, and trips on over-force,
+    overload, a non-finite force and a silent or garbled stream (``LoadCell.latest()`` raises once no valid frame
+    came for its staleness limit, in rig seconds). A frame is never logged twice: no frame, no row."""
 
     def __init__(self, runner: Runner, index: int):
         self.r, self.index = runner, index
@@ -224,6 +309,9 @@ class _ForceLogger:
         self._t0 = runner.rig.clock.now()
         self._trip: BaseException | None = None
         self._seq = 0
+        self._last: int | None = None  # sequence number of the last frame looked at
+        self._raised = False
+        self._base = (0, 0)  # (frame seq, unparseable bytes) when the present garble window began
 
     def start(self) -> None:
         self._sample()
@@ -231,15 +319,29 @@ class _ForceLogger:
 
     def _sample(self) -> None:
         rig = self.r.rig
+        lc = rig.loadcell
         try:
-            reading = rig.loadcell.force()
-        except InstrumentError as exc:
+            newest = lc.latest()  # stale, garbled, overloaded or gone: raises
+            if self._last is None:
+                self._base = (newest.seq, lc.bytes_skipped)
+            check_stream(newest.seq - self._base[0], lc.bytes_skipped - self._base[1], len(newest.raw), lc.name)
+            if newest.seq - self._base[0] >= GARBLED_WINDOW_FRAMES:  # a new window
+                self._base = (newest.seq, lc.bytes_skipped)
+            frames = lc.frames_since(newest.seq - 1 if self._last is None else self._last)
+            if not frames:
+                return  # nothing new since the last look: nothing to log
+            self._last = frames[-1].seq
+            for fr in frames:
+                if fr.status == "OL":
+                    raise Overload(lc.name, f"overload: {fr.raw!r}")
+                check_force(fr.force_N, rig.limits, lc.name)
+        except (InstrumentError, SafetyTrip) as exc:
             self._trip = exc
             return
-        self._t.append(rig.clock.now() - self._t0)
-        self._f.append(reading.force_N)
-        if reading.force_N > rig.limits.max_force_N:
-            self._trip = SafetyTrip(f"clamp force {reading.force_N:.3g} N exceeded safety.max_force_N = {rig.limits.max_force_N:g} N")
+        fr = frames[-1]
+        own_clock = getattr(lc, "clock", None) is rig.clock  # frames stamped in rig time
+        self._t.append((fr.t_wall if own_clock else rig.clock.now()) - self._t0)
+        self._f.append(fr.force_N)
 
     def _loop(self) -> None:
         clock = self.r.rig.clock
@@ -248,7 +350,8 @@ class _ForceLogger:
         while not self._stop.wait(period_wall):
             self._sample()
             if self._trip is not None:
-                self.r.rig.safe()  # over-force or a dead load cell: drive to 0 V now, not at step end
+                if not self.r._recording.is_set():  # a record's loop acts on it within a block, in order
+                    self.r.rig.safe()  # over-force or a dead load cell: drive to 0 V now, not at step end
                 return
             if clock.now() - last_emit > 5.0:
                 self._flush()
@@ -260,6 +363,8 @@ class _ForceLogger:
             self._t, self._f = [], []
             self.r.emit(Block(self.r.uid, self.index, "force", {"t_s": t, "force_N": f}, seq=self._seq))
             self._seq += 1
+            kept = self.r._inflight.setdefault("rows_kept", {})
+            kept["force"] = kept.get("force", 0) + len(t)
 
     def stop(self) -> None:
         self._stop.set()
@@ -269,6 +374,6 @@ class _ForceLogger:
         self._flush()
 
     def raise_if_tripped(self) -> None:
-        if self._trip is not None:
-            trip, self._trip = self._trip, None
-            raise trip
+        if self._trip is not None and not self._raised:
+            self._raised = True
+            raise self._trip

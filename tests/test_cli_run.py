@@ -135,7 +135,7 @@ def test_a_failed_run_exits_3_with_one_line(tmp_path):
     out = tmp_path / "s.h5"
     r = subprocess.run([*LABRIG, "run", str(rig_limits), "--sim", "--quiet", "--limit", "max_current_A=0.002", "--out", str(out)], capture_output=True, text=True)
     assert r.returncode == 3, (r.returncode, r.stderr)
-    assert "safety trip" in r.stderr
+    assert "safety trip" in r.stderr and "drive read back at" in r.stderr  # 0 V said only once read back
     with SessionReader(out) as s:
         assert s.exit_status == "fail" and s.stream(2, "daq").rows > 0
 

@@ -118,7 +118,8 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
 
         after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
     if result.exit_code != 0:
-        click.echo(f"labrig: run {result.exit_status}: {result.reason} (data so far kept in {path})", err=True)
+        drive = f"; {result.drive}" if result.drive else ""
+        click.echo(f"labrig: run {result.exit_status}: {result.reason}{drive} (data so far kept in {path})", err=True)
         raise click.exceptions.Exit(result.exit_code)
 
 
