@@ -11,7 +11,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from labrig.cli.analysis_cmds import run_fit
+from labrig.analysis import run_fit
 from labrig.session_run import RunRequest, execute
 
 

@@ -49,7 +49,7 @@ def population_speedup(workers: list[int]) -> None:
 
 
 def _warm_up() -> None:
-    import labrig.cli.analysis_cmds  # noqa: F401
+    import labrig.analysis  # noqa: F401
     import labrig.diagnose.engine  # noqa: F401
     import labrig.fit.seed000  # noqa: F401
     import labrig.fit.seed001  # noqa: F401
@@ -59,7 +59,7 @@ def _warm_up() -> None:
 def batch_vs_one_by_one(n_sessions: int, workers: int) -> None:
     from distributed import Client, LocalCluster
 
-    from labrig.cli.analysis_cmds import compute_fit
+    from labrig.analysis import compute_fit
     from labrig.fit.cluster import run_batch
     from labrig.session_run import RunRequest, execute
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from labrig.cli.analysis_cmds import run_fit
+from labrig.analysis import run_fit
 from labrig.physics import presets, transfer
 from labrig.physics.params import TABLE2_KT_BAR
 from labrig.session_run import RunRequest, execute

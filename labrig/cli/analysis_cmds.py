@@ -1,16 +1,14 @@
-"""``labrig fit`` (and the hooks ``labrig run --fit --diagnose`` use)."""
+"""``labrig fit`` (and the hooks ``labrig run --fit --diagnose`` use): options and printing; the work is labrig.analysis."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
 import click
-import numpy as np
 
-from labrig.cli.common import jsonable, print_json
-from labrig.errors import BadInput
+from labrig.analysis import batch, compute_fit, load_and_fit, run_fit, store_fit
+from labrig.cli.common import print_json
 
 # labrig.physics.hammerstein.LAWS, spelled out: importing it here would load scipy for every command (test_hammerstein)
 SEED001_LAWS = ("poly", "butler_volmer", "varcap")
@@ -19,63 +17,6 @@ SEED001_BUDGETS = ("standard", "quick")  # labrig.fit.seed001_compare.BUDGETS
 
 scheduler_option = click.option("--scheduler", metavar="ADDRESS", default=None,
                                 help="dask.distributed scheduler (or env DASK_SCHEDULER_ADDRESS): populations, or a batch of sessions, run there")
-
-
-def _arr(rows: list[dict[str, Any]], key: str) -> np.ndarray:
-    return np.array([np.nan if r.get(key) is None else float(r[key]) for r in rows])
-
-
-def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
-    """The session's data and its seed-000 fit: what `fit` reports and `diagnose` builds on (done once)."""
-    from labrig.fit.seed000 import fit_seed000
-    from labrig.fit.session_data import load_session
-
-    sd = load_session(path)
-    if not sd.pressures and not sd.unpressured:
-        raise BadInput(f"{path}: no finished records to {what}")
-    return sd, fit_seed000(sd)
-
-
-def compute_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
-                seed001_law: str = "poly", seed001_budget: str = "standard", executor: Any = "auto") -> dict[str, Any]:
-    """The seed-000 fit of a session (and seed 001's where the data allows), written nowhere (a cluster task)."""
-    from labrig.fit.seed001 import fit_seed001
-
-    sd, fit = fitted or load_and_fit(path)
-    out = jsonable(fit.to_json())
-    out["seed001"] = None
-    if seed001 != "off":
-        out["seed001"] = jsonable(fit_seed001(sd, method=seed001_method, law=seed001_law, force=seed001 == "on",
-                                              executor=executor, budget=seed001_budget))
-    return out
-
-
-def store_fit(path: str | Path, out: dict[str, Any]) -> None:
-    """Write a fit into /entry/analysis/fit_seed000 and /entry/analysis/fit_seed001."""
-    from labrig.store import SessionFile
-
-    if out.get("seed001") is not None:
-        SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(out["seed001"])})
-    rows = out["per_pressure"]
-    SessionFile(path).write_analysis(
-        "fit_seed000",
-        {
-            "result_json": json.dumps(out),
-            "pressure_kPa": _arr(rows, "pressure_kPa"),
-            "R_cont_ohm": _arr(rows, "R_cont_ohm"),
-            "Kt_bar": _arr(rows, "Kt_bar"),
-            "f1_Hz": _arr(rows, "f1_Hz"),
-            "peak_disp_m": _arr(rows, "peak_disp_m"),
-        },
-    )
-
-
-def run_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
-            seed001_law: str = "poly", seed001_budget: str = "standard", executor: Any = "auto") -> dict[str, Any]:
-    """Fit the seed-000 model (and seed 001's where the data allows) to a session and store the results."""
-    out = compute_fit(path, seed001, seed001_method, fitted, seed001_law, seed001_budget, executor)
-    store_fit(path, out)
-    return out
 
 
 def _summary(out: dict[str, Any]) -> None:
@@ -147,29 +88,6 @@ def exit_code(outcomes: list) -> int:
     if all(o.error is None for o in outcomes):
         return 0
     return 2 if all(o.bad_input for o in outcomes if o.error is not None) else 1
-
-
-def batch(fn: Any, store: Any, sessions: tuple[str, ...], scheduler: str | None, populations: bool = False, **kwargs: Any) -> list:
-    """``fn(path, **kwargs)`` for every session, on the cluster if one is named, and ``store`` run here on each
-    result. With ``populations`` and a single session, the session runs here and its populations go to the cluster."""
-    from labrig.fit.cluster import connect, run_batch, scheduler_address
-
-    for s in sessions:
-        if not Path(s).exists():
-            raise BadInput(f"{s}: no such session file")
-    client = connect(scheduler_address(scheduler))
-    try:
-        if client is not None and populations and len(sessions) == 1:
-            outcomes = run_batch(fn, list(sessions), None, executor=client, **kwargs)
-        else:
-            outcomes = run_batch(fn, list(sessions), client, **kwargs)
-    finally:
-        if client is not None:
-            client.close()
-    for o in outcomes:
-        if o.error is None:
-            store(o.path, o.result)
-    return outcomes
 
 
 @click.command("fit")

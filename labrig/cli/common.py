@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import csv
 import json
-import math
 import sys
 from pathlib import Path
 from typing import Any, Iterable, Sequence
@@ -13,6 +12,7 @@ import click
 import numpy as np
 
 from labrig.errors import BadInput
+from labrig.jsonable import jsonable
 
 
 class MultiValueOption(click.Option):
@@ -38,24 +38,6 @@ class MultiValueOption(click.Option):
                     _orig(v, state)
 
             opt.process = process
-
-
-def jsonable(obj: Any) -> Any:
-    """numpy and non-finite floats to plain JSON (NaN and inf become null)."""
-    if isinstance(obj, dict):
-        return {str(k): jsonable(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [jsonable(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return jsonable(obj.tolist())
-    if isinstance(obj, (np.floating, float)):
-        v = float(obj)
-        return v if math.isfinite(v) else None
-    if isinstance(obj, np.integer):
-        return int(obj)
-    if isinstance(obj, np.bool_):
-        return bool(obj)
-    return obj
 
 
 def print_json(obj: Any) -> None:

@@ -2,42 +2,14 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
 import click
 
+from labrig.analysis import batch, compute_diagnosis, run_diagnosis, store_diagnosis
 from labrig.cli.analysis_cmds import scheduler_option
-from labrig.cli.common import jsonable, print_json
-from labrig.errors import BadInput
-
-
-def compute_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str, Any]:
-    """Diagnose a session on top of its seed-000 fit (``fitted`` from ``load_and_fit``, or made here); writes
-    nothing (a cluster task: the client stores the result)."""
-    from labrig.cli.analysis_cmds import load_and_fit
-    from labrig.diagnose.catalogue import CATALOGUE
-    from labrig.diagnose.engine import baseline_specimens, diagnose
-
-    sd, fit = fitted or load_and_fit(path, "diagnose")
-    out = jsonable(diagnose(sd, baseline_specimens(fit)))
-    if out["cause"]:
-        out["extension"] = CATALOGUE[out["cause"]].describe
-    return out
-
-
-def store_diagnosis(path: str | Path, out: dict[str, Any]) -> None:
-    from labrig.store import SessionFile
-
-    SessionFile(path).write_analysis("diagnosis", {"result_json": json.dumps(out), "verdict": out["verdict"], "cause": out["cause"] or ""})
-
-
-def run_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str, Any]:
-    """Diagnose a session and store the result under /entry/analysis/diagnosis."""
-    out = compute_diagnosis(path, fitted)
-    store_diagnosis(path, out)
-    return out
+from labrig.cli.common import print_json
 
 
 def summary(out: dict[str, Any]) -> None:
@@ -74,7 +46,7 @@ def run_and_print(path: str | Path, as_json: bool, quiet: bool = False, fitted: 
 def diagnose_cmd(sessions: tuple[str, ...], as_json: bool, scheduler: str | None) -> None:
     """Residuals of the fitted model on each SESSION, the likely cause, the extension and its held-out gain.
     Several sessions run as one batch (on the dask cluster given by --scheduler, one task per session)."""
-    from labrig.cli.analysis_cmds import batch, exit_code, print_outcomes
+    from labrig.cli.analysis_cmds import exit_code, print_outcomes
 
     outcomes = batch(compute_diagnosis, store_diagnosis, sessions, scheduler)
     print_outcomes(outcomes, as_json, summary)

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from labrig.cli.common import jsonable
+from labrig.jsonable import jsonable
 from labrig.errors import BadInput
 
 MIN_SEED001_RECORDS = 2  # fit_seed001 needs two records that can tell a nonlinearity
@@ -73,7 +73,7 @@ def _has_time_records(feats: Any) -> bool:
 
 
 def _diagnosis(data: ReportData, recompute: bool) -> None:
-    from labrig.cli.diagnose_cmd import run_diagnosis
+    from labrig.analysis import run_diagnosis
     from labrig.diagnose.features import extract
     from labrig.diagnose.residuals import heldout_residuals
 
@@ -116,7 +116,7 @@ def _check_stored(data: ReportData) -> None:
 
 def gather(path: str | Path, recompute: bool = False) -> ReportData:
     """Read and analyse a session for the report. ``BadInput`` if ``path`` is not a readable session."""
-    from labrig.cli.analysis_cmds import load_and_fit
+    from labrig.analysis import load_and_fit
     from labrig.cli.session_cmds import summary
 
     data = ReportData(Path(path), summary(str(path)))
