@@ -32,6 +32,7 @@ from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.errors import BadInput, validation_error
 from labrig.physics import presets
+from labrig.suspenders import SuspendCfg
 
 
 class _Strict(BaseModel):
@@ -49,6 +50,7 @@ class SafetyCfg(_Strict):
     max_drive_V: float = Field(2.0, gt=0)
     max_current_A: float = Field(0.2, gt=0)
     max_force_N: float = Field(90.0, gt=0)
+    suspend: SuspendCfg = SuspendCfg()  # [safety.suspend]: conditions that hold the run (labrig.suspenders)
 
 
 class SampleCfg(_Strict):

@@ -27,6 +27,7 @@ class RunRequest:
     quiet: bool = True
     safety: dict[str, float] = field(default_factory=dict)
     extra_subscribers: list[Any] = field(default_factory=list)
+    console: Any = None  # rich Console for the progress display (default: stderr)
 
 
 def _protocol_as_run(path: Path) -> registry.LoadedProtocol:
@@ -34,6 +35,17 @@ def _protocol_as_run(path: Path) -> registry.LoadedProtocol:
 
     with SessionReader(path) as r:
         return registry.from_dict(dict(r.config), f"{path} (protocol as run)")
+
+
+def subscribers(req: RunRequest, writer: Any) -> list[Any]:
+    """Everything that listens to the run, built before the runner: the store first (nothing is shown
+    that is not stored), then the caller's, then the progress display (it needs only the events)."""
+    subs: list[Any] = [writer, *req.extra_subscribers]
+    if not req.quiet:
+        from labrig.progress import ProgressDisplay
+
+        subs.append(ProgressDisplay(req.console))
+    return subs
 
 
 def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
@@ -50,18 +62,13 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
             rig = open_rig(load_rig(req.rig_path))
             stack.callback(rig.close)
         writer = SessionWriter.resume(req.path) if req.resume else SessionWriter(req.path)
-        subs: list[Any] = [writer, *req.extra_subscribers]
-        runner = Runner(rig, protocol, subs, resumed_from=writer.previous_uid if req.resume else None)
+        runner = Runner(rig, protocol, subscribers(req, writer), resumed_from=writer.previous_uid if req.resume else None)
         steps = runner.plan()
         runner.done = {steps[i].name for i in writer.done_steps if i < len(steps)}
-        if not req.quiet:
-            from labrig.progress import ProgressDisplay
-
-            subs.append(ProgressDisplay(steps))
         if req.live:
             from labrig.live.app import attach_live
 
-            stack.enter_context(attach_live(runner, subs))
+            stack.enter_context(attach_live(runner))
         if interrupts is not None:
             stack.enter_context(interrupts(runner.request_stop))
         return runner.run()

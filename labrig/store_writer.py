@@ -21,7 +21,7 @@ import h5py
 import numpy as np
 
 from labrig import __version__, store as st
-from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
+from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
 DEFAULT_CHUNK_ROWS = 1024  # unknown length (load-cell streams: tens of rows a step); HDF5 allocates whole chunks
@@ -114,6 +114,8 @@ class SessionWriter:
             step.set_status(event.status)  # last: a reader seeing "done" sees the times too
         elif isinstance(event, Transcript):
             self._transcript(event)
+        elif isinstance(event, Pause):
+            self._pause(event)
         elif isinstance(event, RunStop):
             end = self._f["entry/end"]
             self._set_bytes(end["reason"], event.reason.encode())
@@ -174,12 +176,27 @@ class SessionWriter:
     def _transcript(self, ev: Transcript) -> None:
         ds = self._transcripts.get(ev.device) or self._transcripts["_other"]
         data = ev.jsonl if ev.jsonl.endswith("\n") or not ev.jsonl else ev.jsonl + "\n"
-        raw = np.frombuffer(data.encode(), dtype=np.uint8)
-        if raw.size:
-            old = ds.shape[0]
-            ds.resize((old + raw.size,))
-            ds[old:] = raw
-            ds.flush()
+        _append_bytes(ds, data.encode())
+
+
+    def _pause(self, ev: Pause) -> None:
+        """One JSON line per hold and per continuation in /entry/pauses; an interrupted step starts over."""
+        line = {"event": "resume" if ev.resumed else "hold", "kind": ev.kind, "reason": ev.reason, "step": ev.index,
+                "t": ev.t, "wall": ev.wall, "time": iso(ev.wall)}
+        _append_bytes(self._f["entry/pauses"], (st.to_json(line) + "\n").encode())
+        if ev.resumed and ev.index is not None and ev.index in self._steps:
+            self._restart_step(self._steps[ev.index])
+
+    def _restart_step(self, step: _Step) -> None:
+        # the step runs again from its start: its rows are overwritten from row 0 (readers stop at committed_rows)
+        for stream in step.streams.values():
+            stream.rows = 0
+            stream.committed[()] = 0
+            stream.committed.flush()
+            for ds in stream.datasets:
+                ds.resize((0,))
+                ds.flush()
+        step.set_status("planned")
 
     # ------------------------------------------------------------ layout
 
@@ -284,6 +301,8 @@ class SessionWriter:
         for dev in _devices(ev.rig):
             if dev not in tr:
                 st.new_bytes(tr, dev)
+        if "pauses" not in f["entry"]:  # a session written before pauses were recorded
+            st.new_bytes(f["entry"], "pauses")
         f["entry"].attrs["last_run_uid"] = ev.uid
         self._resuming = False
 
@@ -391,6 +410,7 @@ def _create_layout(f: h5py.File, ev: RunStart) -> None:
     st.new_float(end, "t")
     st.new_float(end, "wall")
 
+    st.new_bytes(entry, "pauses").attrs["note"] = "JSON lines: every pause and suspension (hold / resume, kind, reason, step, t, wall)"
     entry.create_group("analysis").attrs["NX_class"] = "NXcollection"
 
 
@@ -419,3 +439,12 @@ def _create_stream(parent: h5py.Group, spec: StreamSpec) -> None:
         ds.attrs["units"] = col.units
     ds = g.create_dataset(st.COMMITTED, data=np.int64(0))
     ds.attrs["units"] = ""
+
+
+def _append_bytes(ds: h5py.Dataset, data: bytes) -> None:
+    raw = np.frombuffer(data, dtype=np.uint8)
+    if raw.size:
+        old = ds.shape[0]
+        ds.resize((old + raw.size,))
+        ds[old:] = raw
+        ds.flush()
