@@ -28,6 +28,8 @@ class RunRequest:
     safety: dict[str, float] = field(default_factory=dict)
     extra_subscribers: list[Any] = field(default_factory=list)
     console: Any = None  # rich Console for the progress display (default: stderr)
+    pause_file: str | None = None  # the run holds while this file exists
+    sample_path: str | None = None  # specimen file (--sample): overrides the rig's [sample]
 
 
 def _protocol_as_run(path: Path) -> registry.LoadedProtocol:
@@ -62,7 +64,10 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
             rig = open_rig(load_rig(req.rig_path))
             stack.callback(rig.close)
         writer = SessionWriter.resume(req.path) if req.resume else SessionWriter(req.path)
-        runner = Runner(rig, protocol, subscribers(req, writer), resumed_from=writer.previous_uid if req.resume else None)
+        from labrig.suspenders import PauseControl
+
+        runner = Runner(rig, protocol, subscribers(req, writer), resumed_from=writer.previous_uid if req.resume else None,
+                        pauses=PauseControl(req.pause_file))
         steps = runner.plan()
         runner.done = {steps[i].name for i in writer.done_steps if i < len(steps)}
         if req.live:
@@ -70,5 +75,5 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
 
             stack.enter_context(attach_live(runner))
         if interrupts is not None:
-            stack.enter_context(interrupts(runner.request_stop))
+            stack.enter_context(interrupts(runner))
         return runner.run()

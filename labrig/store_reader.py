@@ -166,6 +166,22 @@ class SessionReader:
         return [{"uid": st.text(g["run_uid"][()]), "start_time": st.text(g["start_time"][()]),
                  "resumed_from": st.text(g["resumed_from"][()])} for g in res.values()]
 
+    @property
+    def pauses(self) -> list[dict[str, Any]]:
+        """Every hold and continuation of the run (pause or suspension), in order; [] for older sessions."""
+        if "pauses" not in self._entry:
+            return []
+        lines = st.read_bytes(self._ds("pauses")).decode("utf-8", "replace").splitlines()
+        out = []
+        for line in lines:
+            try:
+                d = json.loads(line)
+            except ValueError:
+                continue  # a line torn by a crash
+            if isinstance(d, dict):
+                out.append(d)
+        return out
+
     # ------------------------------------------------------------ steps and streams
 
     def _step_groups(self) -> list[h5py.Group]:
