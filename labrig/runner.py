@@ -39,6 +39,7 @@ class RunResult:
     reason: str
     exit_code: int
     steps_done: list[str] = field(default_factory=list)
+    noop: bool = False  # nothing was run (resume of a finished session); ``reason`` says why
 
 
 def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import math
 from contextlib import ExitStack
+from datetime import datetime, timezone
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -39,6 +41,18 @@ def _protocol_as_run(path: Path) -> registry.LoadedProtocol:
         return registry.from_dict(dict(r.config), f"{path} (protocol as run)")
 
 
+def _finished(path: Path) -> RunResult | None:
+    """A session that already ended with success and every step done: resuming it is a no-op."""
+    from labrig.store import SessionReader
+
+    with SessionReader(path) as r:
+        if r.exit_status != "success" or r.unfinished_steps():
+            return None
+        end = datetime.fromtimestamp(r.end_wall, timezone.utc).isoformat(timespec="seconds") if math.isfinite(r.end_wall) else "?"
+        return RunResult(r.last_uid, "success", f"nothing to resume: {path} finished with success at {end} "
+                         f"({len(r.steps())} steps done); the file is unchanged", 0, [], noop=True)
+
+
 def subscribers(req: RunRequest, writer: Any) -> list[Any]:
     """Everything that listens to the run, built before the runner: the store first (nothing is shown
     that is not stored), then the caller's, then the progress display (it needs only the events)."""
@@ -54,6 +68,8 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
     """Open the rig, run the protocol with the store (and progress/live plot) subscribed, close the rig."""
     from labrig.store import SessionWriter
 
+    if req.resume and (done := _finished(req.path)) is not None:
+        return done  # nothing is opened or written: the session stays as it was
     protocol = _protocol_as_run(req.path) if req.resume else registry.load(req.protocol)
     with ExitStack() as stack:
         if req.sim:

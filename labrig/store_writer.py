@@ -28,6 +28,11 @@ DEFAULT_CHUNK_ROWS = 1024  # unknown length (load-cell streams: tens of rows a s
 STEP_DATASETS = ("status", "t_start", "t_end", "wall_start", "wall_end", "summary")
 
 
+def partial_path(path: Path) -> Path:
+    """Where a new session is laid out before it appears under its own name (hidden, same folder)."""
+    return path.with_name(f".{path.name}.partial")
+
+
 def chunk_rows(expected_rows: int) -> int:
     """Chunk length for a column: the planned length rounded up to a power of two, within [64, 65536]."""
     if expected_rows <= 0:
@@ -203,18 +208,38 @@ class SessionWriter:
     def _run_start(self, ev: RunStart) -> None:
         if self._f is not None and not self._resuming:
             raise RuntimeError(f"{self.path}: a second RunStart while run {self.uid} is open")
-        if self._resuming:
+        resuming = self._resuming
+        if resuming:
             self._continue(ev)
         else:
             check_plan(ev)
             self.path.parent.mkdir(parents=True, exist_ok=True)
-            self._f = h5py.File(self.path, "w", libver="latest")
+            partial = partial_path(self.path)
+            self._f = h5py.File(partial, "w", libver="latest")
             _create_layout(self._f, ev)
         self.uid = ev.uid
         self._open_handles()
         self._f.flush()
         self._f.swmr_mode = True  # from here on: no new objects, no attribute changes
-        self._lock_fd = st.writer_lock(self.path)
+        if resuming:
+            self._lock_fd = st.writer_lock(self.path)
+            return
+        self._lock_fd = st.writer_lock(partial)
+        # The session appears under its name only once its layout is complete: a kill before this
+        # leaves no session (just the hidden partial file), never a half-made one. link() refuses to
+        # replace an existing file, so a session is never overwritten.
+        try:
+            os.link(partial, self.path)
+        except FileExistsError:
+            self.close()
+            partial.unlink()
+            raise FileExistsError(f"{self.path}: already exists; a session is never overwritten") from None
+        except OSError:  # a file system without hard links: a rename (checked just before) does the same
+            if self.path.exists():
+                raise
+            os.replace(partial, self.path)
+            return
+        partial.unlink()
 
     def _open_handles(self) -> None:
         steps = self._f["entry/steps"]

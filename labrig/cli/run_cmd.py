@@ -133,6 +133,9 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         sample_path=sample_path,
     )
     result = execute(req, interrupts=_Interrupts)
+    if result.noop:
+        click.echo(f"labrig: {result.reason}", err=True)
+        return
     if result.exit_code == 0 and (do_fit or do_diagnose):
         from labrig.cli.analysis_cmds import after_run
 

@@ -44,7 +44,10 @@ def summary(path: str) -> dict[str, Any]:
                 for s in steps
             ],
             "analysis": r.analyses(),
+            "pauses": r.pauses,
             "incomplete": r.incomplete(),
+            "notes": ["cleared the 'open for write' flags its killed writer left (as h5clear -s does): "
+                      "any HDF5 tool opens it now"] if r.cleared_flags else [],
         }
 
 
@@ -74,6 +77,10 @@ def _print(s: dict[str, Any]) -> None:
         d = f"{st['duration_s']:9.2f} s" if st["duration_s"] is not None else " " * 11
         rows = ", ".join(f"{k} {n}" + (f"/{st['expected_rows'][k]}" if st["expected_rows"].get(k) else "") for k, n in st["rows"].items())
         echo(f"  {st['index']:3d}  {st['name']:<{width}}  {st['kind']:<{kwidth}}  {p}  {d}  {st['status']:<8}  {rows or '-'}")
+    for p in s["pauses"]:
+        at = f" at step {p['step'] + 1}" if isinstance(p.get("step"), int) else " between steps"
+        what = {"pause": "paused", "suspend": "suspended"}.get(p["kind"], p["kind"]) if p["event"] == "hold" else "resumed"
+        echo(f"{what:<12} {p.get('time', '?')}{at}: {p['reason']}")
     if s["analysis"]:
         echo("analysis     " + ", ".join(s["analysis"]))
     if s["incomplete"]:
@@ -90,6 +97,8 @@ def _print(s: dict[str, Any]) -> None:
 def inspect_cmd(file: str, as_json: bool) -> None:
     """What a session file holds and what is incomplete."""
     s = summary(file)
+    for note in s["notes"]:
+        click.echo(f"note: {file}: {note}", err=True)
     if as_json:
         print_json(s)
     else:
