@@ -59,6 +59,7 @@ class RunStart:
     t: float
     wall: float = field(default_factory=time.time)
     resumed_from: str | None = None  # uid of the interrupted run this one continues
+    user: dict[str, Any] = field(default_factory=dict)  # the operator: name, notes (NeXus NXuser)
 
 
 @dataclass(frozen=True)

@@ -116,6 +116,7 @@ class Runner:
             config=self.protocol.as_dict(),
             rig=self.rig.describe(),
             sample=self.rig.sample_info(),
+            user=self.rig.user_info() if hasattr(self.rig, "user_info") else {},
             software={"labrig": __version__, "numpy": np.__version__},
             steps=plans,
             t=self.rig.clock.now(),

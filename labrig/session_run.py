@@ -53,6 +53,28 @@ def _finished(path: Path) -> RunResult | None:
                          f"({len(r.steps())} steps done); the file is unchanged", 0, [], noop=True)
 
 
+def _sample_file(path: str | None) -> dict[str, Any] | None:
+    """``--sample FILE.toml``: the [sample] fields it sets (checked before anything opens or moves)."""
+    if not path:
+        return None
+    from labrig.specimen import load_specimen_file
+
+    sf = load_specimen_file(path)
+    return {"specimen": sf.specimen, "operator": sf.operator}
+
+
+def _recorded_sample(path: Path) -> dict[str, Any] | None:
+    """On resume: the strip the session was started with, so the clamp forces stay those of its plan."""
+    from labrig.specimen import OperatorCfg, SpecimenCfg
+    from labrig.store import SessionReader
+
+    with SessionReader(path) as r:
+        sample, user = dict(r.sample), r.user
+    if "preset" in sample or "name" not in sample:
+        return None
+    return {"specimen": SpecimenCfg.model_validate(sample), "operator": OperatorCfg.model_validate(user) if user else None}
+
+
 def subscribers(req: RunRequest, writer: Any) -> list[Any]:
     """Everything that listens to the run, built before the runner: the store first (nothing is shown
     that is not stored), then the caller's, then the progress display (it needs only the events)."""
@@ -71,6 +93,7 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
     if req.resume and (done := _finished(req.path)) is not None:
         return done  # nothing is opened or written: the session stays as it was
     protocol = _protocol_as_run(req.path) if req.resume else registry.load(req.protocol)
+    sample = _recorded_sample(req.path) if req.resume else _sample_file(req.sample_path)
     with ExitStack() as stack:
         if req.sim:
             from labrig.simulate import simulated_rig
@@ -79,6 +102,8 @@ def execute(req: RunRequest, interrupts: Any = None) -> RunResult:
         else:
             rig = open_rig(load_rig(req.rig_path))
             stack.callback(rig.close)
+        if sample is not None:  # the described strip replaces the rig's preset (clamp forces, fit geometry)
+            rig.config = rig.config.model_copy(update={"sample": rig.config.sample.model_copy(update=sample)})
         writer = SessionWriter.resume(req.path) if req.resume else SessionWriter(req.path)
         from labrig.suspenders import PauseControl
 

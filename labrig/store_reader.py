@@ -136,6 +136,12 @@ class SessionReader:
         return json.loads(st.text(self._entry["sample"].attrs["labrig_json"]))
 
     @property
+    def user(self) -> dict[str, Any]:
+        """The operator (``/entry/user``): name, notes; {} when none was given."""
+        g = self._entry.get("user")
+        return json.loads(st.text(g.attrs["labrig_json"])) if g is not None and "labrig_json" in g.attrs else {}
+
+    @property
     def rig(self) -> dict[str, Any]:
         return json.loads(st.text(self._entry["instrument"].attrs["labrig_json"]))
 

@@ -404,6 +404,14 @@ def _create_layout(f: h5py.File, ev: RunStart) -> None:
         elif isinstance(value, str):
             st.new_text(sample, key, value)
 
+    if ev.user:  # NeXus NXuser: who ran it
+        user = entry.create_group("user")
+        user.attrs["NX_class"] = "NXuser"
+        user.attrs["labrig_json"] = st.to_json(ev.user)
+        for key, value in ev.user.items():
+            if isinstance(value, str):
+                st.new_text(user, key, value)
+
     inst = entry.create_group("instrument")
     inst.attrs["NX_class"] = "NXinstrument"
     inst.attrs["labrig_json"] = st.to_json(ev.rig)

@@ -98,6 +98,8 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         raise BadInput("--resume continues the protocol stored in the session: do not name one")
     if resume_path and out:
         raise BadInput("--resume appends to its own file: do not give --out")
+    if resume_path and sample_path:
+        raise BadInput("--resume continues with the sample stored in the session: do not give --sample")
     if not resume_path and not out:
         raise BadInput("--out FILE.h5 is required")
     path = Path(resume_path or out)

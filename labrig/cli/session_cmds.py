@@ -33,6 +33,7 @@ def summary(path: str) -> dict[str, Any]:
             "resumes": r.resumes,
             "labrig_version": r.software.get("labrig_version"),
             "sample": r.sample,
+            "user": r.user,
             "instruments": r.instruments,
             "steps": [
                 {
@@ -67,6 +68,8 @@ def _print(s: dict[str, Any]) -> None:
     reason = f" ({s['reason']})" if s["reason"] else ""
     echo(f"time         {s['start_time']} .. {s['end_time'] or '?'}  exit status {end}{reason}")
     echo("sample       " + ("  ".join(f"{k}={v}" for k, v in s["sample"].items()) or "(none)"))
+    if s["user"]:
+        echo("operator     " + "  ".join(f"{k}={v}" for k, v in s["user"].items()))
     inst = [f"{name}{_identity(conf)}" for name, conf in s["instruments"].items()]
     echo("instruments  " + (", ".join(inst) or "(none)"))
     echo(f"steps        {len(s['steps'])}")
