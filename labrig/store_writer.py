@@ -9,6 +9,9 @@ is flushed, so ``kill -9`` loses at most the block in flight. Resume: ``SessionW
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import json
 import os
 import platform
 import sys
@@ -25,6 +28,7 @@ from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepP
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
 DEFAULT_CHUNK_ROWS = 1024  # unknown length (load-cell streams: tens of rows a step); HDF5 allocates whole chunks
+REF_STREAM = "daq"  # the stream whose rows a DAQ call's result is (stored once: the transcript refers to them)
 STEP_DATASETS = ("status", "t_start", "t_end", "wall_start", "wall_end", "summary")
 
 
@@ -82,12 +86,15 @@ def _devices(rig: dict[str, Any]) -> dict[str, dict[str, Any]]:
 class SessionWriter:
     """Event subscriber writing one session file. ``writer(event)`` for each labrig.events event."""
 
+    by_reference = True  # DAQ results in transcripts refer to the stored rows (False: inline copy, bench only)
+
     def __init__(self, path: str | Path):
         self.path = Path(path)
         self.uid: str | None = None
         self._f: h5py.File | None = None
         self._steps: dict[int, _Step] = {}
         self._transcripts: dict[str, h5py.Dataset] = {}
+        self._ref_rows: dict[int, int] = {}  # per step: daq rows already referenced by a transcript
         self._lock_fd: int | None = None
         self.previous_uid: str | None = None  # set by resume(): the last run written into this session
         self._history: tuple[str, ...] = ()  # resume(): every run uid of the session (resumed_from may name any)
@@ -180,8 +187,45 @@ class SessionWriter:
 
     def _transcript(self, ev: Transcript) -> None:
         ds = self._transcripts.get(ev.device) or self._transcripts["_other"]
-        data = ev.jsonl if ev.jsonl.endswith("\n") or not ev.jsonl else ev.jsonl + "\n"
+        jsonl = self._by_reference(ev) if ev.index is not None and self.by_reference else ev.jsonl
+        data = jsonl if jsonl.endswith("\n") or not jsonl else jsonl + "\n"
         _append_bytes(ds, data.encode())
+
+    def _by_reference(self, ev: Transcript) -> str:
+        """One copy of each sample: a ``call`` whose result is exactly the next rows of the step's ``daq``
+        stream keeps its command, arguments and a SHA-256 of the result, plus where the rows are; the
+        bytes are not stored again. Anything else (and a result that differs from the rows) stays inline."""
+        step = self._steps.get(ev.index)
+        stream = step.streams.get(REF_STREAM) if step is not None else None
+        if stream is None or '"op":"call"' not in ev.jsonl:
+            return ev.jsonl
+        out = []
+        for line in ev.jsonl.splitlines():
+            d = json.loads(line) if '"op":"call"' in line else None
+            if d and d.get("payload"):
+                payload = base64.b64decode(d["payload"])
+                ref = self._rows_ref(ev.index, stream, payload)
+                if ref is not None:
+                    d["payload"] = ""
+                    d["meta"] = {**d.get("meta", {}), "result_rows": ref}
+                    line = json.dumps(d, separators=(",", ":"))
+            out.append(line)
+        return "\n".join(out) + "\n"
+
+    def _rows_ref(self, index: int, stream: _Stream, payload: bytes) -> dict[str, Any] | None:
+        width = 8 * len(stream.spec_columns)
+        start = self._ref_rows.get(index, 0)
+        if not payload or len(payload) % width:
+            return None
+        n = len(payload) // width
+        if start + n > stream.rows:
+            return None
+        stored = b"".join(np.asarray(ds[start:start + n], dtype="<f8").tobytes() for ds in stream.datasets)
+        if stored != payload:
+            return None
+        self._ref_rows[index] = start + n
+        return {"step": index, "stream": REF_STREAM, "start": start, "count": n, "columns": list(stream.spec_columns),
+                "sha256": hashlib.sha256(payload).hexdigest()}
 
 
     def _pause(self, ev: Pause) -> None:
@@ -194,6 +238,7 @@ class SessionWriter:
 
     def _restart_step(self, step: _Step) -> None:
         # the step runs again from its start: its rows are overwritten from row 0 (readers stop at committed_rows)
+        self._ref_rows.pop(next(i for i, s in self._steps.items() if s is step), None)
         for stream in step.streams.values():
             stream.rows = 0
             stream.committed[()] = 0
