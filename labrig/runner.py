@@ -146,6 +146,9 @@ class Runner:
                     summary = self._run_step(i, step)
                 except _Hold:
                     self._hold(i)  # the step starts over once the hold ends
+                    if self.stop_requested.is_set():  # aborted while held: the step is recorded as aborted
+                        status, reason, code = "abort", self.stop_reason, 1
+                        break
                     current = None
                     continue
                 if isinstance(step.action, SetClamp):

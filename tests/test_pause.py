@@ -105,7 +105,7 @@ def _steps_done(path):
 
 def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
     out = tmp_path / "s.h5"
-    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(STEP_TOML), "--sim", "--quiet", "--time-scale", "100",
+    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(STEP_TOML), "--sim", "--quiet", "--time-scale", "10",
                              "--out", str(out)], stderr=subprocess.PIPE, text=True)
     try:
         deadline = time.time() + 60
@@ -115,7 +115,7 @@ def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
         while _steps_done(out)[1] < 1 and time.time() < deadline:
             time.sleep(0.05)
         done_at_hold = _steps_done(out)[0]
-        time.sleep(1.0)  # 100 rig seconds: the 5 s settle and the 10 s record would be over if it ran
+        time.sleep(1.5)  # 15 rig seconds: the 5 s settle would be over if it ran
         assert _steps_done(out) == (done_at_hold, 1) and proc.poll() is None
         proc.send_signal(signal.SIGUSR1)
         assert proc.wait(60) == 0, proc.stderr.read()
@@ -125,3 +125,18 @@ def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
     with SessionReader(out) as r:
         assert [(p["event"], p["reason"]) for p in r.pauses] == [("hold", "SIGUSR1"), ("resume", "SIGUSR1")]
         assert r.exit_status == "success" and all(s.status == "done" for s in r.steps())
+
+
+def test_ctrl_c_at_a_terminal_asks_and_abort_stops_with_the_drive_at_0V(tmp_path):
+    """What _Interrupts does on Ctrl-C at a terminal: a hold with the question; the answer 'abort' ends the run."""
+    asked = []
+    out = tmp_path / "s.h5"
+    with simulated_rig(time_scale=1000.0) as (rig, sims):
+        pauses = PauseControl(ask=lambda where: asked.append((where, sims.daq.ao_output_V())) or "abort")
+        hooks = Hooks(StepStart=lambda ev: pauses.request("Ctrl-C") if ev.index == 1 else None)
+        res = Runner(rig, registry.load(str(STEP_TOML)), [SessionWriter(out), hooks], pauses=pauses).run()
+    assert res.exit_code == 1 and res.exit_status == "abort" and "while paused" in res.reason
+    assert asked == [("paused at step 2 (Ctrl-C)", 0.0)]  # asked with the drive already at 0 V
+    with SessionReader(out) as r:
+        assert [(p["event"], p["reason"]) for p in r.pauses] == [("hold", "Ctrl-C")]
+        assert [s.status for s in r.steps()] == ["done", "aborted", "planned"]
