@@ -59,6 +59,7 @@ class RunStart:
     t: float
     wall: float = field(default_factory=time.time)
     resumed_from: str | None = None  # uid of the interrupted run this one continues
+    user: dict[str, Any] = field(default_factory=dict)  # the operator: name, notes (NeXus NXuser)
 
 
 @dataclass(frozen=True)
@@ -98,6 +99,25 @@ class Transcript:
     run: str
     device: str
     jsonl: str
+    index: int | None = None  # the step whose traffic this is (None: between steps / outside the plan)
+
+
+@dataclass(frozen=True)
+class Pause:
+    """The run holds (``resumed=False``) or goes on again (``resumed=True``), drive at 0 V meanwhile.
+
+    ``kind`` is "pause" (the operator, a pause file or SIGUSR1) or "suspend" (a suspender's watched
+    condition failed, e.g. the clamp force out of tolerance). ``index`` is the interrupted step, which
+    is run again from its start on resume (None: the hold came between steps).
+    """
+
+    run: str
+    kind: Literal["pause", "suspend"]
+    reason: str
+    index: int | None
+    t: float
+    resumed: bool = False
+    wall: float = field(default_factory=time.time)
 
 
 @dataclass(frozen=True)
@@ -109,7 +129,7 @@ class RunStop:
     wall: float = field(default_factory=time.time)
 
 
-Event = RunStart | StepStart | Block | StepEnd | Transcript | RunStop
+Event = RunStart | StepStart | Block | StepEnd | Transcript | Pause | RunStop
 Subscriber = Callable[[Event], None]
 
 
@@ -134,3 +154,13 @@ def force_stream(rows: int = 0) -> StreamSpec:
 
 def eis_stream(rows: int = 0) -> StreamSpec:
     return StreamSpec("eis", EIS_COLUMNS, signal="z_re_ohm", axis="f_Hz", expected_rows=rows)
+
+
+def planned_seconds(kind: str, metadata: dict[str, Any], streams: tuple) -> float:
+    """Planned rig seconds of a step (progress and ETA weights) from what ``RunStart`` carries."""
+    for s in streams:
+        if s.name == "daq" and s.expected_rows and metadata.get("fs_Hz"):
+            return s.expected_rows / float(metadata["fs_Hz"])
+    if "duration_s" in metadata:
+        return float(metadata["duration_s"])
+    return {"clamp": 10.0, "settle": 10.0, "eis": 60.0}.get(kind, 10.0)

@@ -14,6 +14,7 @@ Regenerate the recorded test sessions: ``python -m labrig.replay --regenerate te
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 import threading
@@ -74,7 +75,8 @@ class StreamReplay:
     instrument. Writes (zero, tare) must match the recording in order.
     """
 
-    def __init__(self, exchanges: list[Exchange], others: list[Any], device: str = "loadcell"):
+    def __init__(self, exchanges: list[Exchange], others: list[Any], device: str = "loadcell",
+                 clock: Any = None, scale: float = 1.0):
         self.device, self.others = device, others
         self._reads = [e for e in exchanges if e.op == "read"]
         self._writes = [e for e in exchanges if e.op == "write"]
@@ -83,6 +85,8 @@ class StreamReplay:
         self._lock = threading.Lock()
         self.timeout = 0.0
         self.is_open = True
+        self.clock, self.scale = clock, float(scale)  # rig seconds per recorded (wall) second
+        self._anchor: tuple[float, float] | None = None  # (recorded t, replay clock) at the last other-device exchange
 
     def _horizon(self) -> float:
         """Recorded time of the next exchange any other device still waits to replay (inf: all done)."""
@@ -97,9 +101,27 @@ class StreamReplay:
                 times.append(nxt.t)
         return min(times, default=math.inf)
 
+    def _last_other(self) -> float:
+        """Recorded time of the latest exchange another device has replayed (-inf: none yet)."""
+        done = [rep._ex[rep._pos - 1].t for rep in self.others if rep._pos > 0]
+        return max(done, default=-math.inf)
+
+    def _paced(self, t: float) -> bool:
+        """Has the replay clock reached the frame's recorded time? Measured from the last exchange of
+        another device (the sync point both runs share), at the recorded clock's scale."""
+        last = self._last_other()
+        # before any other device spoke, what came before the run; and the first frame at once (the recorded
+        # run had it by then: its clock also ran while it computed, the replay's runs only while it waits)
+        if self.clock is None or last == -math.inf or self._r == 0:
+            return True
+        if self._anchor is None or self._anchor[0] != last:
+            self._anchor = (last, self.clock.now())
+        t_a, c_a = self._anchor
+        return t <= t_a or (t - t_a) * self.scale <= self.clock.now() - c_a
+
     def _release(self) -> None:
         h = self._horizon()
-        while self._r < len(self._reads) and self._reads[self._r].t <= h:
+        while self._r < len(self._reads) and self._reads[self._r].t <= h and self._paced(self._reads[self._r].t):
             self._buf += self._reads[self._r].payload
             self._r += 1
 
@@ -144,6 +166,19 @@ class StreamReplay:
         self.is_open = False
 
 
+class _ReplayLoadCell(LoadCell):
+    """The load cell parsing in the caller's thread (no reader thread racing the replay clock); the runner
+    and its force logger both read it, so parsing is serialised."""
+
+    def __init__(self, port: Any, stale_s: float):
+        super().__init__(port, stale_s=stale_s, background=False)
+        self._pump_lock = threading.Lock()
+
+    def pump(self) -> None:
+        with self._pump_lock:
+            super().pump()
+
+
 @dataclass
 class ReplayRig:
     rig: Rig
@@ -154,11 +189,34 @@ class ReplayRig:
         self.rig.loadcell.close()
 
 
+def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
+    """The transcript with each result stored by reference (``meta.result_rows``) filled in from the
+    session's rows, checked against the SHA-256 the writer recorded (``ReplayMismatch`` if they differ)."""
+    if not any("result_rows" in e.meta for e in tr.exchanges):
+        return tr
+    cache: dict[tuple[int, str], Any] = {}
+    out = []
+    for e in tr.exchanges:
+        ref = e.meta.get("result_rows")
+        if isinstance(ref, dict):
+            key = (int(ref["step"]), str(ref["stream"]))
+            if key not in cache:
+                cache[key] = reader.stream(*key)
+            data, a, n = cache[key], int(ref["start"]), int(ref["count"])
+            payload = b"".join(np.asarray(data[c][a:a + n], dtype="<f8").tobytes() for c in ref["columns"])
+            if hashlib.sha256(payload).hexdigest() != ref.get("sha256"):
+                raise ReplayMismatch(e.device, f"the stored rows {a}..{a + n} of step {key[0]} {key[1]} differ from "
+                                                f"what the instrument returned (SHA-256 mismatch)")
+            e = Exchange(e.t, e.device, e.op, payload, e.meta)
+        out.append(e)
+    return Transcript(out)
+
+
 def replay_rig(reader: SessionReader) -> ReplayRig:
     """A Rig whose drivers answer from the session's transcripts (instrument settings from its rig config)."""
     data = {k: v for k, v in reader.rig.items() if k in ("clock", "sample", "safety", "instruments")}
     cfg = parse_rig(data, f"{reader.path} (rig as recorded)")
-    tr = {dev: Transcript.loads(reader.transcript(dev)) for dev in ("daq", "impedance", "keyence", "loadcell", "clamp")}
+    tr = {dev: with_rows(Transcript.loads(reader.transcript(dev)), reader) for dev in ("daq", "impedance", "keyence", "loadcell", "clamp")}
     ins = cfg.instruments
     d = ins.daq
     # DaqRig.from_replay's ``device`` is the transcript's device name and shadows the NI device name the
@@ -176,10 +234,13 @@ def replay_rig(reader: SessionReader) -> ReplayRig:
         clamp: Any = MotorClamp(reps["clamp"], max_force_N=cfg.safety.max_force_N)
     else:
         clamp = OperatorClamp(ask=lambda msg: None)  # the operator already did it: the load cell replay says so
-    cell_port = StreamReplay(tr["loadcell"].for_device("loadcell"), list(reps.values()))
-    loadcell = LoadCell(cell_port, stale_s=60.0)
     start = [s.t_start for s in reader.steps() if math.isfinite(s.t_start)]
     clock = VirtualClock(min(start) if start else 0.0)
+    # frames come at the recorded pace on the replay clock (rig s = recorded wall s x the recorded time scale),
+    # so a clamp wait sees the frames it saw when recorded, not every frame up to the next command at once
+    cell_port = StreamReplay(tr["loadcell"].for_device("loadcell"), list(reps.values()), clock=clock,
+                             scale=cfg.clock.time_scale)
+    loadcell = _ReplayLoadCell(cell_port, stale_s=60.0)
     return ReplayRig(Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp), reps)  # type: ignore[arg-type]
 
 
@@ -275,7 +336,10 @@ def check(path: str | Path) -> CheckResult:
 
     with SessionReader(path) as reader:
         protocol = registry.from_dict(reader.config, f"{path} (protocol as run)")
-        rr = replay_rig(reader)
+        try:
+            rr = replay_rig(reader)
+        except ReplayMismatch as exc:  # a transcript's reference to rows that were changed since
+            return CheckResult(False, f"FAIL: {exc}")
         runner = Runner(rr.rig, protocol, uid=reader.uid)
         cmp = _Comparer(reader, runner.request_stop)
         runner.subscribers.append(cmp)

@@ -4,6 +4,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
 
     [clock]            time_scale = 1000.0, epoch_wall = <unix time>   (simulated benches only)
     [sample]           preset = "paper"                                (the strip's geometry and medium)
+    [sample.specimen]  name, length_m, width_m, thickness_m, clamp_area_m2, medium, temperature_C, batch, notes
+    [sample.operator]  name, notes                                     (labrig.specimen; instead of the preset)
     [safety]           max_drive_V, max_current_A, max_force_N
     [instruments.keyence]   address (pyserial URL or device path), dialect
     [instruments.loadcell]  address
@@ -36,6 +38,8 @@ from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.errors import BadInput, validation_error
 from labrig.physics import presets
+from labrig.specimen import OperatorCfg, SpecimenCfg, sample_record, user_record
+from labrig.suspenders import SuspendCfg
 
 
 class _Strict(BaseModel):
@@ -53,10 +57,15 @@ class SafetyCfg(_Strict):
     max_drive_V: float = Field(2.0, gt=0)
     max_current_A: float = Field(0.2, gt=0)
     max_force_N: float = Field(90.0, gt=0)
+    suspend: SuspendCfg = SuspendCfg()  # [safety.suspend]: conditions that hold the run (labrig.suspenders)
 
 
 class SampleCfg(_Strict):
+    """``[sample]``: a preset strip, or a described one (``[sample.specimen]``, ``[sample.operator]``; labrig.specimen)."""
+
     preset: str = "paper"
+    specimen: SpecimenCfg | None = None
+    operator: OperatorCfg | None = None
 
 
 class KeyenceCfg(_Strict):
@@ -186,9 +195,16 @@ class Rig:
 
     @property
     def clamp_area_m2(self) -> float:
-        return presets.get(self.config.sample.preset).base.geometry.clamp_area
+        spec = self.config.sample.specimen
+        return spec.clamp_area_m2 if spec is not None else presets.get(self.config.sample.preset).base.geometry.clamp_area
+
+    def user_info(self) -> dict[str, Any]:
+        """Who ran it (``/entry/user``): the [operator] table, {} when not given."""
+        return user_record(self.config.sample.operator)
 
     def sample_info(self) -> dict[str, Any]:
+        if self.config.sample.specimen is not None:
+            return sample_record(self.config.sample.specimen)
         g = presets.get(self.config.sample.preset).base
         return {
             "preset": self.config.sample.preset,

@@ -25,15 +25,20 @@ from drivers.transcript import Transcript as DriverTranscript
 from drivers.analyser_models import out_of_range
 from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
-from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
+from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
 from labrig.limits import GARBLED_WINDOW_FRAMES, check_daq_block, check_force, check_impedance, check_laser, check_stream
 from labrig.rig import REPLY_RIG_S, REPLY_WALL_S, Rig, rig_timeout
+from labrig.suspenders import PauseControl, SuspendCfg, Suspenders, wait_pause_answer
 from protocols.registry import LoadedProtocol
 from protocols.steps import Impedance, Record, SetClamp, Settle, Step, peak_drive
 
 BLOCK_ROWS = 20000  # rows per stored data block of a record at most
 EMIT_WALL_S = 0.02  # DAQ blocks read within this many wall seconds are stored as one (a 1000x bench reads
 # a block every ~2 ms; a real one every 0.25 s): what a kill -9 can lose at most. A fault stores them at once.
+
+
+class _Hold(Exception):
+    """A pause or a failed suspender at a safe point inside a step: the step stops and starts over later."""
 
 
 @dataclass
@@ -44,6 +49,7 @@ class RunResult:
     exit_code: int
     steps_done: list[str] = field(default_factory=list)
     drive: str = ""  # the drive's state as read back after the run (``SafeState.line()``)
+    noop: bool = False  # nothing was run (resume of a finished session); ``reason`` says why
 
 
 def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:
@@ -79,6 +85,7 @@ class Runner:
         done: Iterable[str] = (),
         resumed_from: str | None = None,
         uid: str | None = None,
+        pauses: PauseControl | None = None,
     ):
         self.rig, self.protocol = rig, protocol
         self.subscribers = list(subscribers)
@@ -87,6 +94,10 @@ class Runner:
         self.resumed_from = resumed_from
         self.uid = uid or new_uid()
         self.stop_requested = threading.Event()
+        self.stop_reason = "stopped by the operator"
+        self.pauses = pauses or PauseControl()
+        self.suspenders = Suspenders(getattr(rig.config.safety, "suspend", None) or SuspendCfg(), rig)
+        self._tr_pos = 0  # exchanges of rig.transcript already emitted
         self._emit_lock = threading.Lock()
         self.steps: list[Step] = []
         self._inflight: dict[str, Any] = {}  # what the step in flight has stored so far (for its StepEnd)
@@ -98,6 +109,11 @@ class Runner:
         with self._emit_lock:  # the force logger emits from its own thread
             for sub in self.subscribers:
                 sub(ev)
+
+    def subscribe(self, sub: Subscriber) -> None:
+        """Add a subscriber (the one way to attach after construction: ``subscribers`` is the runner's own list)."""
+        with self._emit_lock:
+            self.subscribers.append(sub)
 
     def request_stop(self) -> None:
         """Stop at the next safe point (Ctrl-C once, or the Stop button)."""
@@ -118,6 +134,7 @@ class Runner:
             config=self.protocol.as_dict(),
             rig=self.rig.describe(),
             sample=self.rig.sample_info(),
+            user=self.rig.user_info() if hasattr(self.rig, "user_info") else {},
             software={"labrig": __version__, "numpy": np.__version__},
             steps=plans,
             t=self.rig.clock.now(),
@@ -131,19 +148,34 @@ class Runner:
         finished: list[str] = []
         status, reason, code = "success", "all steps done", 0
         current: int | None = None
+        todo = [i for i, s in enumerate(steps) if s.name not in self.done]
         try:
-            for i, step in enumerate(steps):
-                if step.name in self.done:
-                    continue
+            k = 0
+            while k < len(todo):
+                i, step = todo[k], steps[todo[k]]
+                if not self.stop_requested.is_set():
+                    self._hold_if_asked(in_step=False)  # a pause or a failed suspender between steps
                 if self.stop_requested.is_set():
-                    status, reason, code = "abort", "stopped by the operator", 1
+                    status, reason, code = "abort", self.stop_reason, 1
                     break
                 current = i
                 self.emit(StepStart(self.uid, i, self.rig.clock.now()))
-                summary = self._run_step(i, step)
+                try:
+                    summary = self._run_step(i, step)
+                except _Hold:
+                    self._hold(i)  # the step starts over once the hold ends
+                    if self.stop_requested.is_set():  # aborted while held: the step is recorded as aborted
+                        status, reason, code = "abort", self.stop_reason, 1
+                        break
+                    current = None
+                    continue
+                if isinstance(step.action, SetClamp):
+                    self.suspenders.clamp_target_N = step.action.force_N
                 self.emit(StepEnd(self.uid, i, "done", self.rig.clock.now(), summary))
+                self._flush_transcripts(i)
                 finished.append(step.name)
                 current = None
+                k += 1
         except SafetyTrip as exc:
             status, reason, code = "fail", f"safety trip: {exc}", 3
         except InstrumentError as exc:
@@ -161,14 +193,66 @@ class Runner:
             if current is not None:
                 summary = {"reason": reason, **self._inflight}
                 self.emit(StepEnd(self.uid, current, "aborted" if status == "abort" else "failed", self.rig.clock.now(), summary))
-            self._flush_transcripts()
+            self._flush_transcripts(current)
             self.emit(RunStop(self.uid, status, reason, self.rig.clock.now()))
         return RunResult(self.uid, status, reason, code, finished, state.line())
 
-    def _flush_transcripts(self) -> None:
+    def _flush_transcripts(self, index: int | None) -> None:
+        """The instrument traffic since the last flush, as the run goes (a crash keeps what was flushed)."""
         tr = self.rig.transcript
-        for dev in tr.devices():
-            self.emit(Transcript(self.uid, dev, DriverTranscript(tr.for_device(dev)).dumps()))
+        new = tr.exchanges[self._tr_pos:]
+        self._tr_pos += len(new)
+        for dev in sorted({e.device for e in new}):
+            self.emit(Transcript(self.uid, dev, DriverTranscript(e for e in new if e.device == dev).dumps(), index))
+
+    # ------------------------------------------------------------------------------ pause, suspension
+    def _hold_reason(self) -> tuple[str, str] | None:
+        why = self.pauses.pending()
+        if why is not None:
+            return "pause", why
+        if self.suspenders.active and (why := self.suspenders.failing()) is not None:
+            return "suspend", why
+        return None
+
+    def _hold_if_asked(self, in_step: bool) -> None:
+        """At a safe point: hold here if asked to (between steps) or raise ``_Hold`` (inside a step)."""
+        if self._hold_reason() is None:
+            return
+        if in_step:
+            raise _Hold()
+        self._hold(None)
+
+    def _hold(self, index: int | None) -> None:
+        """Drive at 0 V, record the hold, wait until it may go on (or a stop), record the continuation."""
+        hold = self._hold_reason() or ("pause", self.pauses.reason or "paused")
+        kind, why = hold
+        self.rig.safe()
+        self.emit(Pause(self.uid, kind, why, index, self.rig.clock.now()))
+        clock, cfg = self.rig.clock, self.suspenders.cfg
+        if kind == "pause":
+            where = f"paused at step {index + 1}" if index is not None else "paused between steps"
+            answer = wait_pause_answer(self.pauses, f"{where} ({why})") if self.pauses.ask else "pause"
+            if answer == "abort":
+                self.stop_reason = "aborted by the operator while paused"
+                self.stop_requested.set()
+            elif answer == "resume":
+                self.pauses.resume()
+            while not self.stop_requested.is_set() and not self.pauses.may_resume():
+                clock.wait(self.stop_requested, cfg.poll_s)
+        else:
+            t0, good_since = clock.now(), None
+            while not self.stop_requested.is_set():
+                if self.suspenders.failing() is None:
+                    good_since = clock.now() if good_since is None else good_since
+                    if clock.now() - good_since >= cfg.resume_after_s:
+                        break
+                else:
+                    good_since = None
+                if clock.now() - t0 > cfg.max_hold_s:
+                    raise SafetyTrip(f"suspended for more than safety.suspend.max_hold_s = {cfg.max_hold_s:g} s: {why}")
+                clock.wait(self.stop_requested, cfg.poll_s)
+        if not self.stop_requested.is_set():
+            self.emit(Pause(self.uid, kind, why, index, self.rig.clock.now(), resumed=True))
 
     # ------------------------------------------------------------------------------ steps
     def _run_step(self, index: int, step: Step) -> dict[str, Any]:
@@ -208,6 +292,7 @@ class Runner:
         while clock.now() < end and not self.stop_requested.is_set():
             clock.sleep(min(1.0, end - clock.now()))
             logger.raise_if_tripped()
+            self._hold_if_asked(in_step=True)  # a safe point: a pause or a failed suspender interrupts the settle
         return {"duration_s": duration_s}
 
     def _impedance(self, index: int, a: Impedance) -> dict[str, Any]:

@@ -10,6 +10,7 @@ after every column of it is flushed, so a block torn by a kill is never returned
 from __future__ import annotations
 
 import json
+import os
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -64,20 +65,35 @@ class SessionReader:
     def __init__(self, path: str | Path):
         self.path = st.check_path(path)
         self.swmr = False
+        self.cleared_flags = False  # True: this open cleared the flags a killed writer left (h5clear -s)
         try:
             self._f = h5py.File(self.path, "r")
         except OSError as exc:
             if not st._crashed_writer_flags(exc):
                 raise BadInput(f"{self.path}: cannot open ({exc})") from None
-            try:  # being written right now, or its writer was killed: SWMR read works for both
-                self._f = h5py.File(self.path, "r", swmr=True)
-                self.swmr = True
-            except OSError as exc2:
-                raise BadInput(f"{self.path}: cannot open ({exc2})") from None
+            self._f = self._open_crashed()
         if not st.is_session(self._f):
             self._f.close()
             raise BadInput(f"{self.path}: not a labrig session (no /entry with a labrig_format attribute)")
         self._entry = self._f["entry"]
+
+    def _open_crashed(self) -> h5py.File:
+        """A file whose write flags are set: a killed writer's (no live lock) is cleared so that every HDF5
+        tool opens it again; one being written now (or read-only here) is read in SWMR mode."""
+        if not st.writer_alive(self.path) and os.access(self.path, os.W_OK):
+            try:
+                st.clear_write_flags(self.path)
+                f = h5py.File(self.path, "r")
+                self.cleared_flags = True
+                return f
+            except (BadInput, OSError):
+                pass  # not a superblock we can clear: read it as SWMR below
+        try:  # being written right now, or its writer was killed: SWMR read works for both
+            f = h5py.File(self.path, "r", swmr=True)
+            self.swmr = True
+            return f
+        except OSError as exc2:
+            raise BadInput(f"{self.path}: cannot open ({exc2})") from None
 
     def close(self) -> None:
         self._f.close()
@@ -118,6 +134,12 @@ class SessionReader:
     @property
     def sample(self) -> dict[str, Any]:
         return json.loads(st.text(self._entry["sample"].attrs["labrig_json"]))
+
+    @property
+    def user(self) -> dict[str, Any]:
+        """The operator (``/entry/user``): name, notes; {} when none was given."""
+        g = self._entry.get("user")
+        return json.loads(st.text(g.attrs["labrig_json"])) if g is not None and "labrig_json" in g.attrs else {}
 
     @property
     def rig(self) -> dict[str, Any]:
@@ -165,6 +187,22 @@ class SessionReader:
             return []
         return [{"uid": st.text(g["run_uid"][()]), "start_time": st.text(g["start_time"][()]),
                  "resumed_from": st.text(g["resumed_from"][()])} for g in res.values()]
+
+    @property
+    def pauses(self) -> list[dict[str, Any]]:
+        """Every hold and continuation of the run (pause or suspension), in order; [] for older sessions."""
+        if "pauses" not in self._entry:
+            return []
+        lines = st.read_bytes(self._ds("pauses")).decode("utf-8", "replace").splitlines()
+        out = []
+        for line in lines:
+            try:
+                d = json.loads(line)
+            except ValueError:
+                continue  # a line torn by a crash
+            if isinstance(d, dict):
+                out.append(d)
+        return out
 
     # ------------------------------------------------------------ steps and streams
 

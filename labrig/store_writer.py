@@ -9,6 +9,9 @@ is flushed, so ``kill -9`` loses at most the block in flight. Resume: ``SessionW
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import json
 import os
 import platform
 import sys
@@ -21,11 +24,17 @@ import h5py
 import numpy as np
 
 from labrig import __version__, store as st
-from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
+from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
 DEFAULT_CHUNK_ROWS = 1024  # unknown length (load-cell streams: tens of rows a step); HDF5 allocates whole chunks
+REF_STREAM = "daq"  # the stream whose rows a DAQ call's result is (stored once: the transcript refers to them)
 STEP_DATASETS = ("status", "t_start", "t_end", "wall_start", "wall_end", "summary")
+
+
+def partial_path(path: Path) -> Path:
+    """Where a new session is laid out before it appears under its own name (hidden, same folder)."""
+    return path.with_name(f".{path.name}.partial")
 
 
 def chunk_rows(expected_rows: int) -> int:
@@ -77,12 +86,15 @@ def _devices(rig: dict[str, Any]) -> dict[str, dict[str, Any]]:
 class SessionWriter:
     """Event subscriber writing one session file. ``writer(event)`` for each labrig.events event."""
 
+    by_reference = True  # DAQ results in transcripts refer to the stored rows (False: inline copy, bench only)
+
     def __init__(self, path: str | Path):
         self.path = Path(path)
         self.uid: str | None = None
         self._f: h5py.File | None = None
         self._steps: dict[int, _Step] = {}
         self._transcripts: dict[str, h5py.Dataset] = {}
+        self._ref_rows: dict[int, int] = {}  # per step: daq rows already referenced by a transcript
         self._lock_fd: int | None = None
         self.previous_uid: str | None = None  # set by resume(): the last run written into this session
         self._history: tuple[str, ...] = ()  # resume(): every run uid of the session (resumed_from may name any)
@@ -114,6 +126,8 @@ class SessionWriter:
             step.set_status(event.status)  # last: a reader seeing "done" sees the times too
         elif isinstance(event, Transcript):
             self._transcript(event)
+        elif isinstance(event, Pause):
+            self._pause(event)
         elif isinstance(event, RunStop):
             end = self._f["entry/end"]
             self._set_bytes(end["reason"], event.reason.encode())
@@ -173,31 +187,104 @@ class SessionWriter:
 
     def _transcript(self, ev: Transcript) -> None:
         ds = self._transcripts.get(ev.device) or self._transcripts["_other"]
-        data = ev.jsonl if ev.jsonl.endswith("\n") or not ev.jsonl else ev.jsonl + "\n"
-        raw = np.frombuffer(data.encode(), dtype=np.uint8)
-        if raw.size:
-            old = ds.shape[0]
-            ds.resize((old + raw.size,))
-            ds[old:] = raw
-            ds.flush()
+        jsonl = self._by_reference(ev) if ev.index is not None and self.by_reference else ev.jsonl
+        data = jsonl if jsonl.endswith("\n") or not jsonl else jsonl + "\n"
+        _append_bytes(ds, data.encode())
+
+    def _by_reference(self, ev: Transcript) -> str:
+        """One copy of each sample: a ``call`` whose result is exactly the next rows of the step's ``daq``
+        stream keeps its command, arguments and a SHA-256 of the result, plus where the rows are; the
+        bytes are not stored again. Anything else (and a result that differs from the rows) stays inline."""
+        step = self._steps.get(ev.index)
+        stream = step.streams.get(REF_STREAM) if step is not None else None
+        if stream is None or '"op":"call"' not in ev.jsonl:
+            return ev.jsonl
+        out = []
+        for line in ev.jsonl.splitlines():
+            d = json.loads(line) if '"op":"call"' in line else None
+            if d and d.get("payload"):
+                payload = base64.b64decode(d["payload"])
+                ref = self._rows_ref(ev.index, stream, payload)
+                if ref is not None:
+                    d["payload"] = ""
+                    d["meta"] = {**d.get("meta", {}), "result_rows": ref}
+                    line = json.dumps(d, separators=(",", ":"))
+            out.append(line)
+        return "\n".join(out) + "\n"
+
+    def _rows_ref(self, index: int, stream: _Stream, payload: bytes) -> dict[str, Any] | None:
+        width = 8 * len(stream.spec_columns)
+        start = self._ref_rows.get(index, 0)
+        if not payload or len(payload) % width:
+            return None
+        n = len(payload) // width
+        if start + n > stream.rows:
+            return None
+        stored = b"".join(np.asarray(ds[start:start + n], dtype="<f8").tobytes() for ds in stream.datasets)
+        if stored != payload:
+            return None
+        self._ref_rows[index] = start + n
+        return {"step": index, "stream": REF_STREAM, "start": start, "count": n, "columns": list(stream.spec_columns),
+                "sha256": hashlib.sha256(payload).hexdigest()}
+
+
+    def _pause(self, ev: Pause) -> None:
+        """One JSON line per hold and per continuation in /entry/pauses; an interrupted step starts over."""
+        line = {"event": "resume" if ev.resumed else "hold", "kind": ev.kind, "reason": ev.reason, "step": ev.index,
+                "t": ev.t, "wall": ev.wall, "time": iso(ev.wall)}
+        _append_bytes(self._f["entry/pauses"], (st.to_json(line) + "\n").encode())
+        if ev.resumed and ev.index is not None and ev.index in self._steps:
+            self._restart_step(self._steps[ev.index])
+
+    def _restart_step(self, step: _Step) -> None:
+        # the step runs again from its start: its rows are overwritten from row 0 (readers stop at committed_rows)
+        self._ref_rows.pop(next(i for i, s in self._steps.items() if s is step), None)
+        for stream in step.streams.values():
+            stream.rows = 0
+            stream.committed[()] = 0
+            stream.committed.flush()
+            for ds in stream.datasets:
+                ds.resize((0,))
+                ds.flush()
+        step.set_status("planned")
 
     # ------------------------------------------------------------ layout
 
     def _run_start(self, ev: RunStart) -> None:
         if self._f is not None and not self._resuming:
             raise RuntimeError(f"{self.path}: a second RunStart while run {self.uid} is open")
-        if self._resuming:
+        resuming = self._resuming
+        if resuming:
             self._continue(ev)
         else:
             check_plan(ev)
             self.path.parent.mkdir(parents=True, exist_ok=True)
-            self._f = h5py.File(self.path, "w", libver="latest")
+            partial = partial_path(self.path)
+            self._f = h5py.File(partial, "w", libver="latest")
             _create_layout(self._f, ev)
         self.uid = ev.uid
         self._open_handles()
         self._f.flush()
         self._f.swmr_mode = True  # from here on: no new objects, no attribute changes
-        self._lock_fd = st.writer_lock(self.path)
+        if resuming:
+            self._lock_fd = st.writer_lock(self.path)
+            return
+        self._lock_fd = st.writer_lock(partial)
+        # The session appears under its name only once its layout is complete: a kill before this
+        # leaves no session (just the hidden partial file), never a half-made one. link() refuses to
+        # replace an existing file, so a session is never overwritten.
+        try:
+            os.link(partial, self.path)
+        except FileExistsError:
+            self.close()
+            partial.unlink()
+            raise FileExistsError(f"{self.path}: already exists; a session is never overwritten") from None
+        except OSError:  # a file system without hard links: a rename (checked just before) does the same
+            if self.path.exists():
+                raise
+            os.replace(partial, self.path)
+            return
+        partial.unlink()
 
     def _open_handles(self) -> None:
         steps = self._f["entry/steps"]
@@ -284,6 +371,8 @@ class SessionWriter:
         for dev in _devices(ev.rig):
             if dev not in tr:
                 st.new_bytes(tr, dev)
+        if "pauses" not in f["entry"]:  # a session written before pauses were recorded
+            st.new_bytes(f["entry"], "pauses")
         f["entry"].attrs["last_run_uid"] = ev.uid
         self._resuming = False
 
@@ -360,6 +449,14 @@ def _create_layout(f: h5py.File, ev: RunStart) -> None:
         elif isinstance(value, str):
             st.new_text(sample, key, value)
 
+    if ev.user:  # NeXus NXuser: who ran it
+        user = entry.create_group("user")
+        user.attrs["NX_class"] = "NXuser"
+        user.attrs["labrig_json"] = st.to_json(ev.user)
+        for key, value in ev.user.items():
+            if isinstance(value, str):
+                st.new_text(user, key, value)
+
     inst = entry.create_group("instrument")
     inst.attrs["NX_class"] = "NXinstrument"
     inst.attrs["labrig_json"] = st.to_json(ev.rig)
@@ -391,6 +488,7 @@ def _create_layout(f: h5py.File, ev: RunStart) -> None:
     st.new_float(end, "t")
     st.new_float(end, "wall")
 
+    st.new_bytes(entry, "pauses").attrs["note"] = "JSON lines: every pause and suspension (hold / resume, kind, reason, step, t, wall)"
     entry.create_group("analysis").attrs["NX_class"] = "NXcollection"
 
 
@@ -419,3 +517,12 @@ def _create_stream(parent: h5py.Group, spec: StreamSpec) -> None:
         ds.attrs["units"] = col.units
     ds = g.create_dataset(st.COMMITTED, data=np.int64(0))
     ds.attrs["units"] = ""
+
+
+def _append_bytes(ds: h5py.Dataset, data: bytes) -> None:
+    raw = np.frombuffer(data, dtype=np.uint8)
+    if raw.size:
+        old = ds.shape[0]
+        ds.resize((old + raw.size,))
+        ds[old:] = raw
+        ds.flush()

@@ -7,6 +7,7 @@ import subprocess
 import sys
 import time
 
+import h5py
 import pytest
 
 from labrig.store import SessionReader
@@ -59,7 +60,14 @@ def test_kill_9_then_resume_completes_the_session(tmp_path):
     finally:
         if proc.poll() is None:
             proc.kill()
-    info = json.loads(run("inspect", str(out), "--json").stdout)
+    with pytest.raises(OSError, match="already open for write"):
+        h5py.File(out, "r")  # what the kill leaves: HDF5 tools refuse it ...
+    shown = run("inspect", str(out), "--json")
+    assert "cleared the 'open for write' flags" in shown.stderr  # ... until the next labrig command, which says so
+    h5py.File(out, "r").close()
+    with SessionReader(out) as s:  # transcripts are written as the run goes: the kill keeps them
+        assert all(s.transcript(dev).strip() for dev in ("daq", "keyence", "loadcell", "impedance"))
+    info = json.loads(shown.stdout)
     statuses = [s["status"] for s in info["steps"]]
     done_before = statuses.count("done")
     assert done_before >= 6 and info["exit_status"] in (None, "")
@@ -72,6 +80,10 @@ def test_kill_9_then_resume_completes_the_session(tmp_path):
         steps = s.steps()
         assert all(st.status == "done" for st in steps)
         assert all(st.rows.get("daq", 0) == st.expected_rows.get("daq", 0) for st in steps)
+    before = out.read_bytes()
+    r = run("run", "--resume", str(out), "--sim", "--quiet")
+    assert r.returncode == 0 and "nothing to resume" in r.stderr and "finished with success" in r.stderr
+    assert out.read_bytes() == before  # a finished session is left exactly as it was
 
 
 @pytest.mark.parametrize(
@@ -150,3 +162,58 @@ def test_every_command_loads_under_its_name():
     assert app.list_commands(ctx) == sorted(_COMMANDS)
     for name in _COMMANDS:
         assert app.get_command(ctx, name).name == name
+
+
+SPECIMEN = """[specimen]
+name = "strip-B7"
+length_m = 0.025
+width_m = 0.006
+thickness_m = 0.00021
+clamp_area_m2 = 1.2e-5
+medium = "water"
+temperature_C = 22.5
+batch = "Nafion 117, lot 11"
+notes = "second strip of the batch"
+
+[operator]
+name = "A. Researcher"
+notes = "refilled the tank at 10:40"
+"""
+
+
+def test_run_with_a_sample_file_stores_the_strip_and_the_operator_and_uses_the_geometry(tmp_path):
+    from labrig.fit.seed000 import base_specimen
+
+    spec = tmp_path / "strip.toml"
+    spec.write_text(SPECIMEN)
+    out = tmp_path / "s.h5"
+    proto = os.path.join(os.path.dirname(__file__), "data", "sessions", "step.toml")
+    r = run("run", proto, "--sim", "--quiet", "--sample", str(spec), "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    with h5py.File(out, "r") as f:  # NeXus: NXsample and NXuser
+        assert f["entry/sample"].attrs["NX_class"] == "NXsample" and f["entry/user"].attrs["NX_class"] == "NXuser"
+        assert f["entry/sample/name"][()] == b"strip-B7" and f["entry/sample/length_m"].attrs["units"] == "m"
+        assert f["entry/sample/temperature_C"][()] == 22.5 and f["entry/user/name"][()] == b"A. Researcher"
+    with SessionReader(out) as s:
+        assert s.sample["batch"] == "Nafion 117, lot 11" and "preset" not in s.sample
+        assert s.user == {"name": "A. Researcher", "notes": "refilled the tank at 10:40"}
+        clamp = s.steps()[0]
+        assert abs(clamp.metadata["force_N"] - 3062e3 * 1.2e-5) < 1e-9  # the clamp force from this strip's area
+        geom = base_specimen(s.sample).geometry  # what the fit starts from: this strip, not the preset
+        assert (geom.length, geom.width, geom.thickness) == (0.025, 0.006, 0.00021)
+    shown = run("inspect", str(out))
+    assert "name=strip-B7" in shown.stdout and "operator     name=A. Researcher" in shown.stdout
+
+
+@pytest.mark.parametrize("edit, word", [
+    (lambda t: t.replace('name = "strip-B7"\n', ""), "specimen.name"),
+    (lambda t: t.replace("length_m = 0.025", "length_m = true"), "specimen.length_m"),
+    (lambda t: t.replace("[operator]", "[operatr]"), "operatr"),
+])
+def test_a_bad_sample_file_is_one_line_exit_2_before_anything_moves(tmp_path, edit, word):
+    spec = tmp_path / "strip.toml"
+    spec.write_text(edit(SPECIMEN))
+    r = run("run", "step", "--sim", "--quiet", "--sample", str(spec), "--out", str(tmp_path / "s.h5"))
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
+    assert str(spec) in r.stderr and word in r.stderr
+    assert not (tmp_path / "s.h5").exists()

@@ -84,7 +84,8 @@ def test_live_run_plots_the_session_and_leaves_the_file_as_without_live(tmp_path
         want = [frf_point(FrfRecord(s.index, s.name, s.metadata, *(r.stream(s, "daq")[c] for c in ("t_s", "v_V", "i_A", "disp_m")))) for s in recs]
     assert [p.f_Hz for p in win.frf] == [p.f_Hz for p in want]
     np.testing.assert_allclose([p.gain_mm_per_V for p in win.frf], [p.gain_mm_per_V for p in want], rtol=1e-12)
-    np.testing.assert_array_equal(win.frf_mag_curve.xData, sorted(p.f_Hz for p in want))
+    ((mag, _),) = win.frf_curves.values()  # one pressure: one curve
+    np.testing.assert_array_equal(mag.xData, sorted(p.f_Hz for p in want))
     win.resize(1400, 900)
     win.show()
     win.wait_idle(0.3)
@@ -93,7 +94,7 @@ def test_live_run_plots_the_session_and_leaves_the_file_as_without_live(tmp_path
     assert png.stat().st_size > 10_000
     for plot, colour in zip(win.trace_plots[:3], ("#1f77b4", "#d62728", "#2ca02c")):
         assert coloured_pixels(win, plot, colour) > 200
-    assert coloured_pixels(win, win.frf_mag, "#ff7f0e") > 50
+    assert coloured_pixels(win, win.frf_mag, "#1f77b4") > 50  # the first pressure's colour
     win.close()
 
     # the same run without the window: the same file (the simulated bench is not bit-reproducible run to
@@ -247,3 +248,82 @@ def test_minmax_decimation_keeps_every_peak():
     assert np.all(np.diff(x) >= 0)
     x2, y2 = minmax_decimate(np.arange(10.0), np.arange(10.0), 500)
     np.testing.assert_array_equal(y2, np.arange(10.0))
+
+
+def _sine_sweep_events(pressures=(612.0, 3062.0), freqs=(0.5, 1.0, 2.0, 4.0), delay_s=(0.2, 0.15)):
+    """Events of a stepped sine at several pressures; the displacement lags by ``delay_s`` (its phase passes
+    -180 deg), and the force pane gets ~20 minutes of rig time (what a sweep's force log spans)."""
+    from labrig.events import RunStop, StepEnd, StepStart, force_stream
+
+    fs, uid = 200.0, "synthetic"
+    plans, data = [], []
+    for p, delay in zip(pressures, delay_s):
+        for f in freqs:
+            n = int(fs * 6 / f)
+            t = np.arange(n) / fs
+            v = 0.5 * np.sin(2 * np.pi * f * t)
+            gain = 1e-3 * (1.0 + p / 3062.0) / (1.0 + f)  # a different curve per pressure
+            d = 0.5 * gain * np.sin(2 * np.pi * f * (t - delay))
+            md = {"pressure_kPa": p, "frequency_Hz": f, "amplitude_V": 0.5, "cycles": 4.0, "settle_cycles": 2.0, "fs_Hz": fs}
+            plans.append(StepPlan(len(plans), f"p{p:g}/stepped_sine_{f:g}Hz", "stepped_sine", md, (daq_stream(n), force_stream(0))))
+            data.append({"t_s": t, "v_V": v, "i_A": 1e-3 * v, "disp_m": d})
+    evs = [RunStart(uid, "stepped-sine", {}, {}, {}, {}, tuple(plans), t=0.0)]
+    t0 = 0.0
+    for plan, cols in zip(plans, data):
+        evs.append(StepStart(uid, plan.index, t0))
+        evs.append(Block(uid, plan.index, "daq", cols))
+        ft = np.arange(0.0, 60.0, 1.0)
+        evs.append(Block(uid, plan.index, "force", {"t_s": ft, "force_N": np.full(ft.size, 6.0 + plan.index)}))
+        t0 += 150.0
+        evs.append(StepEnd(uid, plan.index, "done", t0))
+    evs.append(RunStop(uid, "success", "all steps done", t0))
+    return evs, delay_s
+
+
+def test_live_window_one_frf_curve_per_pressure_unwrapped_phase_seconds_everywhere(tmp_path, windows):
+    """Issue 14 item 7: the FRF panes draw one curve per pressure with a legend, the phase unwrapped, and
+    every time axis in seconds (the force pane read ks). The screenshot is saved for a person to look at."""
+    from labrig.live.app import new_window
+
+    events, delays = _sine_sweep_events()
+    model = LiveModel()
+    for ev in events:
+        model(ev)
+    win = new_window(model, None, "synthetic sweep")
+    win.resize(1400, 900)
+    win.show()
+    win.window_s = 1e5  # the whole run in the time panes
+    win.refresh()
+    win.wait_idle(0.3)
+    assert sorted(win.frf_curves) == [612.0, 3062.0]
+    legend = [item[1].text for item in win.frf_legend.items]
+    assert legend == ["612 kPa", "3062 kPa"]
+    for (press, (mag, ph)), delay in zip(win.frf_curves.items(), delays):
+        f = np.asarray(mag.xData)
+        assert np.all(np.diff(f) > 0)  # never running back from the highest frequency to the lowest
+        want = -360.0 * f * delay  # a pure delay: -72 deg at 1 Hz, -288 deg at 4 Hz
+        np.testing.assert_allclose(ph.yData, want, atol=2.0)
+    for plot in win.trace_plots:  # one time unit: no SI prefix on any time axis (the force pane said ks)
+        ax = plot.getAxis("bottom")
+        assert ax.autoSIPrefixScale == 1.0 and ax.labelUnitPrefix == ""
+    assert "(s)" in win.trace_plots[-1].getAxis("bottom").labelText
+    force_x = win.force_curve.xData
+    assert force_x.max() > 1000.0  # rig seconds on the force axis, as on the others
+    png = Path(os.environ.get("LABRIG_SCREENSHOT_DIR", tmp_path)) / "live_frf.png"
+    win.save_png(str(png))
+    assert png.stat().st_size > 10_000
+    for (mag, _), colour in zip(win.frf_curves.values(), ("#1f77b4", "#d62728")):
+        assert coloured_pixels(win, win.frf_mag, colour) > 30
+    win.close()
+
+
+def test_a_missing_optional_package_is_one_line_naming_what_to_install(tmp_path):
+    import subprocess
+
+    path = tmp_path / "eis.h5"
+    path.write_bytes(gzip.decompress((DATA / "eis.h5.gz").read_bytes()))
+    code = ("import sys; sys.modules['pyqtgraph'] = None; from labrig.cli import main; "
+            f"sys.exit(main(['replay', {str(path)!r}, '--live']))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2
+    assert r.stderr.strip().splitlines() == ["labrig: error: the optional package 'pyqtgraph' is not installed: pip install 'pyqtgraph'"]

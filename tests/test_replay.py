@@ -146,3 +146,46 @@ def test_replay_events_rebuild_the_stored_streams(tmp_path):
 def test_regenerate_is_documented():
     assert "python -m labrig.replay --regenerate tests/data/sessions" in (DATA / "README.md").read_text()
     shutil.which("python")  # the command is run from the repository root
+
+
+def test_transcripts_hold_each_daq_sample_once_and_check_still_compares_them(tmp_path):
+    """Issue 14 item 5: a DAQ call's result is stored once (the rows); the transcript keeps the command, its
+    arguments, where the rows are and their SHA-256, and replay --check rebuilds the result from the rows."""
+    from labrig.session_run import RunRequest, execute
+
+    path = tmp_path / "s.h5"
+    assert execute(RunRequest(protocol=str(DATA / "step.toml"), path=path, seed=5)).exit_code == 0
+    with SessionReader(path) as r:
+        calls = [json.loads(x) for x in r.transcript("daq").splitlines() if '"op":"call"' in x]
+        rec = next(s for s in r.steps() if "daq" in s.rows)
+        daq_bytes = sum(r.stream(rec, "daq")[c].nbytes for c in ("t_s", "v_V", "i_A", "disp_m"))
+        tr_bytes = len(r.transcript("daq"))
+    finite = [c for c in calls if c["meta"]["method"] == "run_finite"]
+    assert len(finite) == 1 and finite[0]["payload"] == ""
+    ref = finite[0]["meta"]["result_rows"]
+    assert (ref["step"], ref["stream"], ref["start"], ref["count"]) == (rec.index, "daq", 0, rec.rows["daq"])
+    assert len(ref["sha256"]) == 64 and tr_bytes < 0.05 * daq_bytes  # no second copy of the samples
+    assert check(path).ok
+    with h5py.File(path, "r+") as f:  # a stored sample changed after the run: the digest says so
+        ds = f[f"{rec.group}/daq/disp_m"]
+        ds[17] = ds[17] + 1e-6
+    res = check(path)
+    assert not res.ok and f"step {rec.index} daq" in res.message and "SHA-256" in res.message
+
+
+def test_stream_replay_releases_load_cell_frames_at_the_recorded_pace():
+    """The clamp wait of a replay sees the frames it saw when recorded: not every frame up to the next
+    command of another instrument at once (what made --check fail on clean paper sweeps)."""
+    from drivers.transcript import Exchange, ReplayMessages
+    from labrig.replay import StreamReplay, VirtualClock
+
+    frames = [Exchange(0.001 * k, "loadcell", "read", b"ST,GS,+0001.00kg\r\n") for k in range(100)]  # 10 ms apart
+    other = ReplayMessages([Exchange(0.0, "impedance", "write", b"*IDN?"), Exchange(0.5, "impedance", "write", b":INIT")])
+    other.write("*IDN?")  # the sync point: recorded t = 0, replay clock 50 s
+    clock = VirtualClock(50.0)
+    port = StreamReplay(frames, [other], clock=clock, scale=1000.0)  # 1 ms recorded = 1 rig s
+    assert port.in_waiting == len(frames[0].payload)  # only the frame at the sync point
+    clock.sleep(9.5)
+    assert port.in_waiting == 10 * len(frames[0].payload)  # frames 0..9 (t <= 9.5 rig s after the sync)
+    clock.sleep(1000.0)
+    assert port.in_waiting == 100 * len(frames[0].payload)  # all of them once the clock has passed them

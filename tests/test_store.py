@@ -203,17 +203,21 @@ def test_sigkill_mid_run_leaves_a_file_that_opens(killed_session):
     path, uid, seen = killed_session
     with pytest.raises(OSError, match="already open for write"):
         h5py.File(path, "r")  # HDF5 2.0: a plain open refuses the killed writer's file; SWMR read does not
-    with SessionReader(path) as r:
-        assert r.swmr
+    with SessionReader(path) as r:  # no live writer: labrig clears the stale flags (h5clear -s) and says so
+        assert r.cleared_flags and not r.swmr
         assert r.exit_status is None and r.uid == uid
         assert [s.status for s in r.steps()] == ["done", "done", "running"]
         assert assert_daq_intact(r, seen) >= seen * ROWS  # every block the writer reported flushed is there
         assert r.stream(1, "eis")["f_Hz"].tolist() == [1.0, 10.0, 100.0]
         lines = r.incomplete()
         assert lines[0].startswith("no RunStop") and "step 2 p612/step: interrupted while running" in lines
-    SessionFile(path).write_analysis("note", {"x_m": 1.0})  # clears the stale flags
-    with h5py.File(path, "r") as f:  # now a plain open works too
+    with h5py.File(path, "r") as f:  # now any HDF5 tool opens it
+        assert f["entry/steps/002_p612_step/status"][()] == b"running"
+    SessionFile(path).write_analysis("note", {"x_m": 1.0})
+    with h5py.File(path, "r") as f:
         assert f["entry/analysis/note/x_m"][()] == 1.0
+    with SessionReader(path) as r:
+        assert not r.cleared_flags  # cleared once
 
 
 def test_clear_write_flags_refuses_a_file_that_is_not_hdf5(tmp_path):
@@ -328,3 +332,58 @@ def test_a_plan_the_layout_cannot_hold_is_refused_before_any_file(tmp_path):
     with pytest.raises(ValueError, match="twice"):
         SessionWriter(tmp_path / "s.h5")(dup)
     assert not (tmp_path / "s.h5").exists()
+
+
+LAYOUT_WRITER = textwrap.dedent(
+    """
+    import sys
+    sys.path[:0] = [{tests!r}]
+    from test_store import *
+    from labrig.events import StepPlan, daq_stream, force_stream
+    path, uid = sys.argv[1], sys.argv[2]
+    ev = run_start(uid)
+    big = tuple(StepPlan(i, f"p{{i}}/step", "step", {{"pressure_kPa": 612.0}}, (daq_stream(1000), force_stream(0)))
+                for i in range(40))  # a layout long enough to be killed in the middle of
+    w = SessionWriter(path)
+    w(RunStart(**{{**ev.__dict__, "steps": big}}))
+    print("laid out", flush=True)
+    import time
+    time.sleep(60)
+    """
+)
+
+
+@pytest.mark.parametrize("delay_s", [0.0, 0.2, None])
+def test_a_kill_at_any_moment_of_the_layout_leaves_no_session_or_one_that_resumes(tmp_path, delay_s):
+    """Issue 17 item 3: the session appears under its name only once laid out (None: kill after that)."""
+    script = tmp_path / "layout.py"
+    script.write_text(LAYOUT_WRITER.format(tests=os.path.dirname(__file__)))
+    path, uid = tmp_path / "s.h5", new_uid()
+    partial = tmp_path / ".s.h5.partial"
+    proc = subprocess.Popen([sys.executable, str(script), str(path), uid], stdout=subprocess.PIPE, text=True)
+    try:
+        if delay_s is None:
+            assert proc.stdout.readline() == "laid out\n"
+        else:
+            deadline = time.time() + 30
+            while not partial.exists() and time.time() < deadline:
+                time.sleep(0.001)
+            time.sleep(delay_s)
+    finally:
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait()
+    if delay_s is None:
+        assert path.exists() and not partial.exists()
+    if path.exists():  # a whole session: it opens (any tool, once labrig cleared the flags) and resumes
+        with SessionReader(path) as r:
+            assert r.uid == uid and len(r.steps()) == 40 and r.exit_status is None
+        h5py.File(path, "r").close()
+        w = SessionWriter.resume(path)
+        assert w.previous_uid == uid and w.done_steps == []
+        w.close()
+    else:  # no session: the name is free for the next run, and the partial file is not a session
+        w = SessionWriter(path)
+        w(run_start(new_uid()))
+        w.close()
+        with SessionReader(path) as r:
+            assert len(r.steps()) == 3

@@ -66,6 +66,9 @@ def main(argv: list[str] | None = None) -> int:
     except SafetyTrip as exc:
         click.echo(f"labrig: safety trip: {exc}", err=True)
         return 3
+    except ModuleNotFoundError as exc:  # an optional piece that is not installed: say what to install
+        click.echo(f"labrig: error: {missing_package_line(exc)}", err=True)
+        return 2
     except Exception as exc:  # instrument faults carry their device name
         from drivers.errors import InstrumentError
 
@@ -73,6 +76,18 @@ def main(argv: list[str] | None = None) -> int:
             click.echo(f"labrig: instrument fault: {exc}", err=True)
             return 3
         raise
+
+
+# top-level module -> the labrig extra (or package) that provides it
+_EXTRAS = {"dask": "labrig[cluster]", "distributed": "labrig[cluster]", "pyqtgraph": "pyqtgraph",
+           "PySide6": "PySide6-Essentials", "shiboken6": "PySide6-Essentials", "pytest": "labrig[test]"}
+
+
+def missing_package_line(exc: ModuleNotFoundError) -> str:
+    """One line naming the missing module and what to install for it."""
+    name = (exc.name or str(exc)).split(".")[0]
+    what = _EXTRAS.get(name, name)
+    return f"the optional package {name!r} is not installed: pip install '{what}'"
 
 
 def qt_was_used() -> bool:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import signal
+import sys
 import threading
 import time
 from contextlib import ExitStack
@@ -13,6 +14,7 @@ import click
 import tomli_w
 
 from labrig.errors import BadInput
+from labrig.suspenders import terminal_ask
 from labrig.clock import SIM_TIME_SCALE as DEFAULT_TIME_SCALE
 
 
@@ -26,29 +28,42 @@ def _effects(scenario: str, seed: int) -> list[Any]:
 
 
 class _Interrupts:
-    """First Ctrl-C: stop at the next safe point. Second: stop now (KeyboardInterrupt)."""
+    """Ctrl-C at a terminal: hold the run at the next safe point (drive at 0 V) and ask: resume, pause or
+    abort. Without a terminal: stop at the next safe point. A second Ctrl-C (or SIGTERM) stops now
+    (KeyboardInterrupt). SIGUSR1 pauses a headless run, and resumes it when sent again."""
 
-    def __init__(self, stop: Any):
-        self.stop, self.count = stop, 0
+    def __init__(self, runner: Any):
+        self.runner, self.count = runner, 0
+        self.ask = sys.stdin.isatty() and sys.stderr.isatty()
 
     def __enter__(self) -> "_Interrupts":
+        self._old: dict[int, Any] = {}
         if threading.current_thread() is threading.main_thread():
-            self._old = signal.signal(signal.SIGINT, self._handle)
-            self._old_term = signal.signal(signal.SIGTERM, self._handle)
+            for sig in (signal.SIGINT, signal.SIGTERM, getattr(signal, "SIGUSR1", None)):
+                if sig is not None:
+                    self._old[sig] = signal.signal(sig, self._handle)
         return self
 
     def _handle(self, signum: int, frame: Any) -> None:
+        if signum == getattr(signal, "SIGUSR1", None):
+            self.runner.pauses.toggle("SIGUSR1")
+            return
         self.count += 1
-        if self.count == 1 and signum == signal.SIGINT:
+        pauses = self.runner.pauses
+        if signum == signal.SIGINT and self.ask and pauses.pending() is None:
+            self.count = 0  # the prompt decides; a Ctrl-C at the prompt aborts
+            click.echo("\nCtrl-C: holding at the next safe point (Ctrl-C again to stop now)", err=True)
+            pauses.ask = terminal_ask()
+            pauses.request("Ctrl-C")
+        elif self.count == 1 and signum == signal.SIGINT:
             click.echo("\nstopping at the next safe point (Ctrl-C again to stop now)", err=True)
-            self.stop()
+            self.runner.request_stop()
         else:
             raise KeyboardInterrupt
 
     def __exit__(self, *exc: object) -> None:
-        if threading.current_thread() is threading.main_thread():
-            signal.signal(signal.SIGINT, self._old)
-            signal.signal(signal.SIGTERM, self._old_term)
+        for sig, old in self._old.items():
+            signal.signal(sig, old)
 
 
 @click.command("run")
@@ -65,8 +80,11 @@ class _Interrupts:
 @click.option("--fit", "do_fit", is_flag=True, help="fit the model straight after the run")
 @click.option("--diagnose", "do_diagnose", is_flag=True, help="diagnose straight after the fit")
 @click.option("--limit", "limits", multiple=True, metavar="NAME=VALUE", help="simulated bench safety limit, e.g. max_current_A=0.05 (repeatable)")
+@click.option("--sample", "sample_path", type=click.Path(dir_okay=False), help="specimen file (TOML: [specimen], [operator]) for this run")
+@click.option("--pause-file", type=click.Path(dir_okay=False), help="hold the run (drive at 0 V) while this file exists")
 @click.option("-q", "--quiet", is_flag=True, help="no progress display")
-def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, limits, quiet) -> None:
+def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, resume_path, live, do_fit, do_diagnose, limits,
+            sample_path, pause_file, quiet) -> None:
     """Run PROTOCOL (a bundled name such as paper-sweep, or a TOML file) and store every sample.
 
     With --resume FILE.h5, continue the protocol stored in that session from its first unfinished step."""
@@ -80,6 +98,8 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         raise BadInput("--resume continues the protocol stored in the session: do not name one")
     if resume_path and out:
         raise BadInput("--resume appends to its own file: do not give --out")
+    if resume_path and sample_path:
+        raise BadInput("--resume continues with the sample stored in the session: do not give --sample")
     if not resume_path and not out:
         raise BadInput("--out FILE.h5 is required")
     path = Path(resume_path or out)
@@ -111,8 +131,13 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         live=live,
         quiet=quiet,
         safety=safety,
+        pause_file=pause_file,
+        sample_path=sample_path,
     )
     result = execute(req, interrupts=_Interrupts)
+    if result.noop:
+        click.echo(f"labrig: {result.reason}", err=True)
+        return
     if result.exit_code == 0 and (do_fit or do_diagnose):
         from labrig.cli.analysis_cmds import after_run
 

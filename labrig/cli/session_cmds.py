@@ -33,6 +33,7 @@ def summary(path: str) -> dict[str, Any]:
             "resumes": r.resumes,
             "labrig_version": r.software.get("labrig_version"),
             "sample": r.sample,
+            "user": r.user,
             "instruments": r.instruments,
             "steps": [
                 {
@@ -44,7 +45,10 @@ def summary(path: str) -> dict[str, Any]:
                 for s in steps
             ],
             "analysis": r.analyses(),
+            "pauses": r.pauses,
             "incomplete": r.incomplete(),
+            "notes": ["cleared the 'open for write' flags its killed writer left (as h5clear -s does): "
+                      "any HDF5 tool opens it now"] if r.cleared_flags else [],
         }
 
 
@@ -64,6 +68,8 @@ def _print(s: dict[str, Any]) -> None:
     reason = f" ({s['reason']})" if s["reason"] else ""
     echo(f"time         {s['start_time']} .. {s['end_time'] or '?'}  exit status {end}{reason}")
     echo("sample       " + ("  ".join(f"{k}={v}" for k, v in s["sample"].items()) or "(none)"))
+    if s["user"]:
+        echo("operator     " + "  ".join(f"{k}={v}" for k, v in s["user"].items()))
     inst = [f"{name}{_identity(conf)}" for name, conf in s["instruments"].items()]
     echo("instruments  " + (", ".join(inst) or "(none)"))
     echo(f"steps        {len(s['steps'])}")
@@ -74,6 +80,10 @@ def _print(s: dict[str, Any]) -> None:
         d = f"{st['duration_s']:9.2f} s" if st["duration_s"] is not None else " " * 11
         rows = ", ".join(f"{k} {n}" + (f"/{st['expected_rows'][k]}" if st["expected_rows"].get(k) else "") for k, n in st["rows"].items())
         echo(f"  {st['index']:3d}  {st['name']:<{width}}  {st['kind']:<{kwidth}}  {p}  {d}  {st['status']:<8}  {rows or '-'}")
+    for p in s["pauses"]:
+        at = f" at step {p['step'] + 1}" if isinstance(p.get("step"), int) else " between steps"
+        what = {"pause": "paused", "suspend": "suspended"}.get(p["kind"], p["kind"]) if p["event"] == "hold" else "resumed"
+        echo(f"{what:<12} {p.get('time', '?')}{at}: {p['reason']}")
     if s["analysis"]:
         echo("analysis     " + ", ".join(s["analysis"]))
     if s["incomplete"]:
@@ -90,6 +100,8 @@ def _print(s: dict[str, Any]) -> None:
 def inspect_cmd(file: str, as_json: bool) -> None:
     """What a session file holds and what is incomplete."""
     s = summary(file)
+    for note in s["notes"]:
+        click.echo(f"note: {file}: {note}", err=True)
     if as_json:
         print_json(s)
     else:

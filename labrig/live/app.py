@@ -1,6 +1,6 @@
 """Run acquisition (or a replay) in a worker thread while Qt owns the main thread.
 
-``attach_live(runner, subs)`` is what ``labrig.session_run.execute`` enters when ``--live`` is given:
+``attach_live(runner)`` is what ``labrig.session_run.execute`` enters when ``--live`` is given:
 it subscribes a ``LiveModel``, builds the window and wraps ``runner.run`` on the instance so that
 ``execute``'s own ``runner.run()`` call starts the runner in a worker thread and the Qt event loop
 here, and returns the runner's result once both are done. Nothing else in ``execute`` changes and
@@ -106,12 +106,10 @@ def new_window(model: LiveModel, on_stop: Callable[[], None] | None, title: str)
 
 
 @contextmanager
-def attach_live(runner: Any, subs: list[Any]) -> Iterator[Any]:
+def attach_live(runner: Any) -> Iterator[Any]:
     """Subscribe the live model, make the window, and make ``runner.run()`` run under Qt."""
     model = LiveModel()
-    subs.append(model)
-    if runner.subscribers is not subs:  # the runner copies its subscriber list
-        runner.subscribers.append(model)
+    runner.subscribe(model)
     win = new_window(model, runner.request_stop, f"labrig live: {runner.protocol.name}")
     original = runner.run
     runner.run = lambda: run_in_window(win, original)

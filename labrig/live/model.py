@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepStart
+from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepStart, planned_seconds
 
 TRACE_COLUMNS = ("v_V", "i_A", "disp_m")  # daq ring columns after the time column
 FRF_KINDS = ("stepped_sine", "harmonic")  # records demodulated at their frequency_Hz when they finish
@@ -178,16 +178,6 @@ class _StepInfo:
     t0: float = math.nan
     done: bool = False
     parts: list[list[np.ndarray]] = field(default_factory=list)  # sine records: daq blocks kept to demodulate
-
-
-def planned_seconds(kind: str, metadata: dict[str, Any], streams: tuple) -> float:
-    """Planned rig seconds of a step (ETA weights) from what RunStart carries."""
-    for s in streams:
-        if s.name == "daq" and s.expected_rows and metadata.get("fs_Hz"):
-            return s.expected_rows / float(metadata["fs_Hz"])
-    if "duration_s" in metadata:
-        return float(metadata["duration_s"])
-    return {"clamp": 10.0, "settle": 10.0, "eis": 60.0}.get(kind, 10.0)
 
 
 class LiveModel:

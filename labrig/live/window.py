@@ -23,6 +23,7 @@ from labrig.live.qtguard import top_up
 TRACES = ((1, "drive voltage", "V", 1.0, "#1f77b4"), (2, "current", "mA", 1e3, "#d62728"),
           (3, "displacement", "mm", 1e3, "#2ca02c"))
 PEN_W = 1.5
+COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
 
 
 @dataclass
@@ -40,6 +41,14 @@ def frf_point(rec) -> FrfPoint:
     est = sine_estimate(rec.t, rec.v, rec.i, rec.d, float(md["frequency_Hz"]), float(md.get("settle_cycles", 0.0)), md.get("cycles"))
     h = est.H_disp
     return FrfPoint(rec.index, float(md["frequency_Hz"]), abs(h) * 1e3, math.degrees(math.atan2(h.imag, h.real)), md.get("pressure_kPa"))
+
+
+def frf_curve(pts: list[FrfPoint]) -> tuple[np.ndarray, np.ndarray]:
+    """Gain (mm/V) and phase (deg) of points sorted by frequency; the phase unwrapped along them, its first
+    point kept in (-180, 180] (the lag of an IPMC grows past -180 deg with frequency)."""
+    gain = np.array([p.gain_mm_per_V for p in pts])
+    phase = np.degrees(np.unwrap(np.radians([p.phase_deg for p in pts])))
+    return gain, phase
 
 
 class LiveWindow(QtWidgets.QMainWindow):
@@ -86,8 +95,10 @@ class LiveWindow(QtWidgets.QMainWindow):
         for r, (_, name, unit, _, colour) in enumerate(rows):
             p = g.addPlot(row=r, col=0, title=f"{name} ({unit})")
             # no grid here: grid lines are repainted with the scrolling axes and cost ~3x a whole frame
+            # one time unit (s) in every pane: no automatic ks/ms prefixes that would differ between panes
+            p.getAxis("bottom").enableAutoSIPrefix(False)
             if r == len(rows) - 1:
-                p.setLabel("bottom", "rig time", units="s")
+                p.setLabel("bottom", "rig time (s)")
             if self.trace_plots:
                 p.setXLink(self.trace_plots[0])
             # we decimate ourselves (min/max per pixel column); clip to view keeps panning cheap
@@ -99,18 +110,19 @@ class LiveWindow(QtWidgets.QMainWindow):
 
         self.frf_mag = g.addPlot(row=0, col=1, title="FRF |displacement / drive| (mm/V)")
         self.frf_mag.setLogMode(x=True, y=True)
-        self.frf_phase = g.addPlot(row=1, col=1, title="FRF phase (deg)")
+        self.frf_legend = self.frf_mag.addLegend(offset=(-10, 10))  # top right: names each pressure's curve
+        self.frf_phase = g.addPlot(row=1, col=1, title="FRF phase (deg, unwrapped)")
         self.frf_phase.setLogMode(x=True, y=False)
         self.frf_phase.setXLink(self.frf_mag)
         self.frf_phase.setLabel("bottom", "frequency (Hz)")  # no units=: SI prefixes misread on log axes
-        sym = dict(pen=pg.mkPen("#ff7f0e", width=PEN_W), symbol="o", symbolSize=7, symbolBrush="#ff7f0e")
-        self.frf_mag_curve = self.frf_mag.plot(**sym)
-        self.frf_phase_curve = self.frf_phase.plot(**sym)
+        # one (magnitude, phase) curve per clamping pressure, in the order the pressures come
+        self.frf_curves: dict[float | None, tuple[pg.PlotDataItem, pg.PlotDataItem]] = {}
 
         self.nyquist = g.addPlot(row=2, col=1, title="impedance, Nyquist (ohm)")
         self.nyquist.setLabel("bottom", "Z'", units="ohm")
         self.nyquist.setLabel("left", "-Z''", units="ohm")
         self.nyquist.setAspectLocked(True)
+        self.nyquist.addLegend(offset=(-10, 10))  # the EIS curves are named by pressure
         self.bode = g.addPlot(row=3, col=1, title="impedance, Bode |Z| (ohm) and phase (deg, right)")
         self.bode.setLogMode(x=True, y=True)
         self.bode.setLabel("bottom", "frequency (Hz)")
@@ -176,13 +188,25 @@ class LiveWindow(QtWidgets.QMainWindow):
         return np.append(np.diff(x) <= gap, False)
 
     def _frf(self) -> None:
-        pts = sorted(self.frf, key=lambda p: (p.pressure_kPa or 0.0, p.f_Hz))
-        f = np.array([p.f_Hz for p in pts])
-        self.frf_mag_curve.setData(f, np.array([p.gain_mm_per_V for p in pts]))
-        self.frf_phase_curve.setData(f, np.array([p.phase_deg for p in pts]))
+        """One curve per pressure, ascending in frequency, phase unwrapped along it."""
+        by_p: dict[float | None, list[FrfPoint]] = {}
+        for p in self.frf:
+            by_p.setdefault(p.pressure_kPa, []).append(p)
+        for k, (press, pts) in enumerate(by_p.items()):
+            pts.sort(key=lambda p: p.f_Hz)
+            f = np.array([p.f_Hz for p in pts])
+            mag, phase = frf_curve(pts)
+            if press not in self.frf_curves:
+                c = COLOURS[len(self.frf_curves) % len(COLOURS)]
+                name = f"{press:g} kPa" if press is not None else "no pressure"
+                sym = dict(pen=pg.mkPen(c, width=PEN_W), symbol="o", symbolSize=6, symbolBrush=c, symbolPen=c)
+                self.frf_curves[press] = (self.frf_mag.plot(name=name, **sym), self.frf_phase.plot(**sym))
+            m, ph = self.frf_curves[press]
+            m.setData(f, mag)
+            ph.setData(f, phase)
 
     def _eis(self, snap: Snapshot) -> None:
-        colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"]
+        colours = COLOURS
         for k in range(len(self.eis_curves), len(snap.eis)):
             p, arr = snap.eis[k]
             f, zr, zi = arr

@@ -1,0 +1,83 @@
+"""The strip on the bench and who ran it: the ``[sample]`` of a rig file, or ``labrig run --sample FILE.toml``.
+
+A specimen file (DESIGN.md 6) holds the import manifest's ``[specimen]`` table (geometry in SI, medium)
+plus ``name`` (required) and optional ``temperature_C``, ``batch`` and ``notes``, and an ``[operator]``
+table (``name``, optional ``notes``)::
+
+    [specimen]
+    name = "strip-B7"
+    length_m = 0.030
+    width_m = 0.005
+    thickness_m = 0.0002
+    clamp_area_m2 = 2.5e-5
+    medium = "water"
+    temperature_C = 22.5
+    batch = "2026-11 Nafion 117"
+
+    [operator]
+    name = "A. Researcher"
+
+A rig file carries the same tables as ``[sample.specimen]`` and ``[sample.operator]``; without them its
+``[sample] preset`` (default "paper") names the strip. The specimen is stored in ``/entry/sample``, the
+operator in ``/entry/user`` (NeXus NXsample, NXuser); the clamp force of each pressure and the fit's
+geometry come from it.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from labrig.errors import BadInput, validation_error
+from labrig.importer import Specimen
+
+
+class SpecimenCfg(Specimen):
+    """The import manifest's ``[specimen]`` plus what names the strip and its conditions."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+    name: str = Field(min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")
+    temperature_C: float | None = Field(None, gt=-273.15, lt=200)
+    batch: str | None = Field(None, max_length=200, pattern=r"^[^\x00-\x1f\x7f]*$")
+    notes: str | None = Field(None, max_length=4000)
+
+
+class OperatorCfg(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    name: str = Field(min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")
+    notes: str | None = Field(None, max_length=4000)
+
+
+class SpecimenFile(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    specimen: SpecimenCfg
+    operator: OperatorCfg | None = None
+
+
+def load_specimen_file(path: str | Path) -> SpecimenFile:
+    """Read and check a specimen file; ``BadInput`` (exit 2) naming the file and the field."""
+    p = Path(path)
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise BadInput(f"{path}: no such specimen file") from None
+    except (UnicodeDecodeError, IsADirectoryError, PermissionError) as exc:
+        raise BadInput(f"{path}: cannot read the specimen file ({type(exc).__name__})") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise BadInput(f"{path}: not valid TOML ({exc})") from None
+    try:
+        return SpecimenFile.model_validate(data)
+    except ValidationError as exc:
+        raise validation_error(exc, str(path)) from None
+
+
+def sample_record(spec: SpecimenCfg) -> dict[str, Any]:
+    """What ``/entry/sample`` holds for a described strip (no preset: the fit takes this geometry)."""
+    return {k: v for k, v in spec.model_dump().items() if v is not None}
+
+
+def user_record(op: OperatorCfg | None) -> dict[str, Any]:
+    return {} if op is None else {k: v for k, v in op.model_dump().items() if v is not None}
