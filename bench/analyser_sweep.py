@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from drivers.analyser_models import open_analyser
+from drivers.analysers import open_analyser
 from labrig.clock import ScaledClock
 from mock_devices.im3590_sim import Im3590Sim
 from mock_devices.impedance_sim import ImpedanceAnalyzerSim

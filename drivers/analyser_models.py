@@ -10,7 +10,7 @@ means it.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Sequence
 
 
 def hz(f: float) -> str:
@@ -63,15 +63,3 @@ def out_of_range(model: str, freqs_Hz: Sequence[float]) -> str | None:
         return None
     asked = hz(min(bad)) if min(bad) == max(bad) else f"{hz(min(bad))}..{hz(max(bad))}"
     return f"asks the {m.name} for {asked}, outside its range ({m.range_text()})"
-
-
-def open_analyser(resource: str | Any, model: str, **kwargs: Any) -> Any:
-    """The driver for ``model`` on ``resource`` (a VISA name or an open resource such as ``ReplayMessages``)."""
-    m = get(model)
-    if m.dialect == "IM3590":
-        from drivers.hioki_im3590 import HiokiIM3590
-
-        return HiokiIM3590(resource, model=model, **kwargs)
-    from drivers.impedance_analyzer import ImpedanceAnalyzer
-
-    return ImpedanceAnalyzer(resource, model=model, **kwargs)

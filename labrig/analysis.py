@@ -34,7 +34,7 @@ def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
 def compute_fit(path: str | Path, seed001: str = "auto", seed001_method: str = "nelder-mead", fitted: tuple | None = None,
                 seed001_law: str = "poly", seed001_budget: str = "standard", executor: Any = "auto") -> dict[str, Any]:
     """The seed-000 fit of a session (and seed 001's where the data allows), written nowhere (a cluster task)."""
-    from labrig.fit.seed001 import fit_seed001
+    from labrig.fit.seed001_identify import fit_seed001
 
     sd, fit = fitted or load_and_fit(path)
     out = jsonable(fit.to_json())

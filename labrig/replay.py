@@ -27,7 +27,7 @@ import numpy as np
 from drivers.clamp import MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
 from drivers.errors import ReplayMismatch
-from drivers.analyser_models import open_analyser
+from drivers.analysers import open_analyser
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
 from drivers.transcript import Exchange, ReplayMessages, ReplaySerial, Transcript

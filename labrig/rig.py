@@ -31,6 +31,7 @@ from drivers.daq import DaqRig
 from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
 from drivers import analyser_models
+from drivers.analysers import open_analyser
 from drivers.impedance_analyzer import ImpedanceAnalyzer
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
@@ -140,7 +141,8 @@ def load_rig(path: str | Path) -> RigFile:
 ZERO_TOL_V = 0.02  # |drive read back| at or below this is 0 V (AI noise ~0.1 mV, 16 bits over ±10 V: 0.3 mV)
 STALE_RIG_S = 2.0  # a load cell with no valid frame for this many rig seconds is a fault...
 STALE_WALL_S = 0.05  # ... never fewer wall seconds (the host's scheduling: 50 rig s on a 1000x bench)...
-STALE_GRACE_WALL_S = 0.2  # ... and a stream that looks stale gets this long to show a frame (a stalled process)
+STALE_GRACE_WALL_S = 1.0  # ... and a stream that looks stale gets this long to show a frame (a stalled process:
+# 0.2 s faulted a seed001 run in 1 of 4 on this 2-core machine with the suite beside it, after a 0.25 s stall)
 REPLY_RIG_S = 5.0  # an ordinary instrument reply may take this many rig seconds...
 REPLY_WALL_S = 0.5  # ... never fewer wall seconds (a TCP/VISA round trip on a loaded host)
 SERIAL_REPLY_RIG_S = 0.5  # a serial instrument (laser, clamp motor) answers a short command within this
@@ -283,7 +285,7 @@ def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcr
             time_scale=clock.time_scale,
         )
         opened.append(daq)
-        analyzer = analyser_models.open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr,
+        analyzer = open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr,
                                                  timeout_s=rig_timeout(clock, REPLY_RIG_S, REPLY_WALL_S),
                                                  sweep_timeout_s=rig_timeout(clock, 600.0, REPLY_WALL_S))
         opened.append(analyzer)

@@ -10,6 +10,7 @@ import pytest
 import pyvisa
 
 from drivers import analyser_models
+from drivers.analysers import open_analyser
 from drivers.errors import Disconnected, InstrumentErrorReply, InstrumentTimeout, MalformedReply, OverRange
 from drivers.hioki_im3590 import HiokiIM3590
 from labrig.clock import ScaledClock
@@ -116,7 +117,7 @@ def test_faults(an, sim, fault, exc):
 
 
 def test_open_rig_picks_the_driver_by_model(sim):
-    an = analyser_models.open_analyser(sim.resource_name, "IM3590", timeout_s=1.0)
+    an = open_analyser(sim.resource_name, "IM3590", timeout_s=1.0)
     try:
         assert isinstance(an, HiokiIM3590) and an.model.freq_range_Hz == (1e-3, 2e5)
     finally:

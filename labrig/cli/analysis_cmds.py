@@ -2,24 +2,21 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import click
 
-from labrig.analysis import batch, compute_fit, load_and_fit, run_fit, store_fit
-from labrig.cli.common import print_json
+from labrig.analysis import batch, compute_fit, store_fit
+from labrig.cli.common import exit_code, print_outcomes, scheduler_option
 
 # labrig.physics.hammerstein.LAWS, spelled out: importing it here would load scipy for every command (test_hammerstein)
 SEED001_LAWS = ("poly", "butler_volmer", "varcap")
 SEED001_METHODS = ("nelder-mead", "ga", "nsga2", "all")
-SEED001_BUDGETS = ("standard", "quick")  # labrig.fit.seed001_compare.BUDGETS
-
-scheduler_option = click.option("--scheduler", metavar="ADDRESS", default=None,
-                                help="dask.distributed scheduler (or env DASK_SCHEDULER_ADDRESS): populations, or a batch of sessions, run there")
+SEED001_BUDGETS = ("standard", "quick")  # labrig.fit.seed001_identify.BUDGETS
 
 
-def _summary(out: dict[str, Any]) -> None:
+
+def summary(out: dict[str, Any]) -> None:
     click.echo(f"{'kPa':>7} {'R_cont ohm':>16} {'K_t bar':>15} {'f1 Hz':>16} {'step peak mm':>13}")
 
     def pm(r: dict, k: str, fmt: str) -> str:
@@ -65,31 +62,6 @@ def _seed001_summary(h: dict[str, Any]) -> None:
         click.echo(f"  noise floor as NRMSE: current {_g(n.get('current'))}, displacement {_g(n.get('displacement'))}")
 
 
-def print_outcomes(outcomes: list, as_json: bool, summary: Any) -> None:
-    """One session: its object as before. Several: {"sessions": [{"path", "result" | "error"}...]}."""
-    if as_json:
-        if len(outcomes) == 1 and outcomes[0].error is None:
-            print_json(outcomes[0].result)
-        elif len(outcomes) > 1:
-            print_json({"sessions": [{"path": o.path, "result": o.result, "error": o.error} for o in outcomes]})
-    else:
-        for o in outcomes:
-            if o.error is None:
-                if len(outcomes) > 1:
-                    click.echo(f"== {o.path}")
-                summary(o.result)
-    for o in outcomes:
-        if o.error is not None:
-            click.echo(f"labrig: error: {o.error}", err=True)
-
-
-def exit_code(outcomes: list) -> int:
-    """0 when every session has a result; 2 when a session was bad input; 1 when one failed otherwise."""
-    if all(o.error is None for o in outcomes):
-        return 0
-    return 2 if all(o.bad_input for o in outcomes if o.error is not None) else 1
-
-
 @click.command("fit")
 @click.argument("sessions", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object (several sessions: {\"sessions\": [...]})")
@@ -108,18 +80,6 @@ def fit_cmd(sessions: tuple[str, ...], as_json: bool, seed001: str, seed001_meth
     /entry/analysis/ of each session."""
     outcomes = batch(compute_fit, store_fit, sessions, scheduler, populations=True, seed001=seed001, seed001_method=seed001_method,
                      seed001_law=seed001_law, seed001_budget=seed001_budget)
-    print_outcomes(outcomes, as_json, _summary)
+    print_outcomes(outcomes, as_json, summary)
     if exit_code(outcomes):
         raise click.exceptions.Exit(exit_code(outcomes))
-
-
-def after_run(path: Path, fit: bool, diagnose: bool, quiet: bool) -> None:
-    fitted = load_and_fit(path)
-    if fit:
-        out = run_fit(path, fitted=fitted)
-        if not quiet:
-            _summary(out)
-    if diagnose:
-        from labrig.cli import diagnose_cmd
-
-        diagnose_cmd.run_and_print(path, as_json=False, quiet=quiet, fitted=fitted)

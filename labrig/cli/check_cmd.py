@@ -48,9 +48,10 @@ def _daq(cfg: RigFile) -> tuple[str, str]:
 
 def _impedance(cfg: RigFile) -> tuple[str, str]:
     from drivers import analyser_models
+    from drivers.analysers import open_analyser
 
     ins = cfg.instruments.impedance
-    an = analyser_models.open_analyser(ins.address, ins.model, timeout_s=TIMEOUT_S)
+    an = open_analyser(ins.address, ins.model, timeout_s=TIMEOUT_S)
     with closing(an):
         idn = an.identify()
         if ins.model != analyser_models.LEGACY_MODEL and ins.model not in idn.upper():

@@ -54,3 +54,32 @@ def write_csv(path: str | Path, header: Sequence[str], columns: Iterable[np.ndar
                 w.writerow([f"{v:.10g}" for v in row])
     except OSError as exc:
         raise BadInput(f"{path}: cannot write ({exc.strerror})") from None
+
+
+scheduler_option = click.option("--scheduler", metavar="ADDRESS", default=None,
+                                help="dask.distributed scheduler (or env DASK_SCHEDULER_ADDRESS): populations, or a batch of sessions, run there")
+
+
+def print_outcomes(outcomes: list, as_json: bool, summary: Any) -> None:
+    """One session: its object as before. Several: {"sessions": [{"path", "result" | "error"}...]}."""
+    if as_json:
+        if len(outcomes) == 1 and outcomes[0].error is None:
+            print_json(outcomes[0].result)
+        elif len(outcomes) > 1:
+            print_json({"sessions": [{"path": o.path, "result": o.result, "error": o.error} for o in outcomes]})
+    else:
+        for o in outcomes:
+            if o.error is None:
+                if len(outcomes) > 1:
+                    click.echo(f"== {o.path}")
+                summary(o.result)
+    for o in outcomes:
+        if o.error is not None:
+            click.echo(f"labrig: error: {o.error}", err=True)
+
+
+def exit_code(outcomes: list) -> int:
+    """0 when every session has a result; 2 when a session was bad input; 1 when one failed otherwise."""
+    if all(o.error is None for o in outcomes):
+        return 0
+    return 2 if all(o.bad_input for o in outcomes if o.error is not None) else 1

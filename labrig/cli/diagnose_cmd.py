@@ -8,8 +8,7 @@ from typing import Any
 import click
 
 from labrig.analysis import batch, compute_diagnosis, run_diagnosis, store_diagnosis
-from labrig.cli.analysis_cmds import scheduler_option
-from labrig.cli.common import print_json
+from labrig.cli.common import exit_code, print_json, print_outcomes, scheduler_option
 
 
 def summary(out: dict[str, Any]) -> None:
@@ -46,8 +45,6 @@ def run_and_print(path: str | Path, as_json: bool, quiet: bool = False, fitted: 
 def diagnose_cmd(sessions: tuple[str, ...], as_json: bool, scheduler: str | None) -> None:
     """Residuals of the fitted model on each SESSION, the likely cause, the extension and its held-out gain.
     Several sessions run as one batch (on the dask cluster given by --scheduler, one task per session)."""
-    from labrig.cli.analysis_cmds import exit_code, print_outcomes
-
     outcomes = batch(compute_diagnosis, store_diagnosis, sessions, scheduler)
     print_outcomes(outcomes, as_json, summary)
     if exit_code(outcomes):

@@ -139,9 +139,7 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
         click.echo(f"labrig: {result.reason}", err=True)
         return
     if result.exit_code == 0 and (do_fit or do_diagnose):
-        from labrig.cli.analysis_cmds import after_run
-
-        after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
+        _after_run(path, fit=do_fit or do_diagnose, diagnose=do_diagnose, quiet=quiet)
     if result.exit_code != 0:
         drive = f"; {result.drive}" if result.drive else ""
         click.echo(f"labrig: run {result.exit_status}: {result.reason}{drive} (data so far kept in {path})", err=True)
@@ -187,3 +185,17 @@ def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport, impedance_mo
         while not stop.wait(0.2):
             pass
     click.echo("simulated instruments stopped", err=True)
+
+
+def _after_run(path: Path, fit: bool, diagnose: bool, quiet: bool) -> None:
+    """``--fit`` / ``--diagnose``: the session's seed-000 fit (once), stored and printed, then its diagnosis."""
+    from labrig.analysis import load_and_fit, run_fit
+    from labrig.cli import analysis_cmds, diagnose_cmd
+
+    fitted = load_and_fit(path)
+    if fit:
+        out = run_fit(path, fitted=fitted)
+        if not quiet:
+            analysis_cmds.summary(out)
+    if diagnose:
+        diagnose_cmd.run_and_print(path, as_json=False, quiet=quiet, fitted=fitted)

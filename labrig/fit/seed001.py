@@ -1,4 +1,5 @@
-"""Seed 001 from a session: the Hammerstein grey box identified on the session's time records.
+"""Seed 001 from a session: the time records the Hammerstein grey box is identified on, and its summaries (the
+identification itself is labrig.fit.seed001_identify).
 
 Runs when the data can tell a nonlinearity: an amplitude series (records marked ``series = "amplitude"``, as the
 ``seed001`` and ``amplitude-series`` protocols write) or multisines, or when asked. Records are split into the
@@ -17,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from labrig.fit.hammerstein import HammersteinFit, Record, decimate_record, evaluate_chunk, fit_nsga2, fit_sequential, pack, _spec
+from labrig.fit.hammerstein import HammersteinFit, Record, decimate_record, evaluate_chunk, pack, _spec
 from labrig.fit.session_data import SessionData, TimeRecord
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
@@ -141,24 +142,3 @@ def summarise(fit: HammersteinFit, data: Seed001Data, spread: dict[str, float | 
         "wall_s": float(fit.wall_time),
         "pareto_front": None if fit.front_F is None else np.asarray(fit.front_F).tolist(),
     }
-
-
-def fit_seed001(sd: SessionData, method: str = "nelder-mead", law: str = "poly", force: bool = False, max_rate_Hz: float = MAX_RATE_HZ,
-                max_s: float = MAX_S, executor: Any = "auto", budget: str = "standard") -> dict[str, Any] | None:
-    """Identify the Hammerstein model with one method, or with ``method="all"`` compare Nelder-Mead (several starts),
-    GA and NSGA-II (several seeds) on the same records (labrig.fit.seed001_compare). None when the session has
-    no records that can tell it."""
-    if method == "all":
-        from labrig.fit.seed001_compare import BUDGETS, compare
-
-        b = BUDGETS[budget]
-        data = prepare(sd, force, b.max_rate_Hz, b.max_s)
-        return None if data is None else compare(data, law, budget=budget, executor=executor)
-    data = prepare(sd, force, max_rate_Hz, max_s)
-    if data is None:
-        return None
-    if method == "nsga2":
-        fit = fit_nsga2(data.fit, law=law, pop_size=40, n_gen=40, executor=executor)
-    else:
-        fit = fit_sequential(data.fit, method=method, law=law, executor=executor)
-    return summarise(fit, data)

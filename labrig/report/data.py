@@ -54,7 +54,8 @@ def _stored(path: Path, name: str) -> dict[str, Any] | None:
 
 def _seed001(data: ReportData, recompute: bool) -> None:
     """Seed 001's NSGA-II front: the stored one when it has a front, else identified here if the data allows."""
-    from labrig.fit.seed001 import fit_seed001, usable
+    from labrig.fit.seed001 import usable
+    from labrig.fit.seed001_identify import fit_seed001
 
     stored = None if recompute else _stored(data.path, "fit_seed001")
     if stored and stored.get("pareto_front"):

@@ -1,4 +1,4 @@
-"""Seed 001's comparison: Nelder-Mead (several starts), GA and NSGA-II (several seeds) on the same records.
+"""Seed 001's identification (``fit_seed001``): one method, or the comparison of Nelder-Mead (several starts), GA and NSGA-II (several seeds) on the same records.
 
 Per method: the best run's parameters, their standard errors and their spread over the runs (starts or seeds) that converged, the NRMSE of current and displacement on the fitted and on the held-out
 records, evaluations and wall time; the NSGA-II fronts of all seeds merged into one non-dominated front and its
@@ -16,7 +16,8 @@ import numpy as np
 
 from labrig.fit.executors import is_dask_client
 from labrig.fit.hammerstein import HammersteinFit, fit_nsga2, fit_sequential, from_unit, knee_point
-from labrig.fit.seed001 import Seed001Data, clean, summarise
+from labrig.fit.session_data import SessionData
+from labrig.fit.seed001 import MAX_RATE_HZ, MAX_S, Seed001Data, clean, prepare, summarise
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
 
@@ -172,3 +173,22 @@ def compare(data: Seed001Data, law: str = "poly", budget: str | Budget = "standa
         "nonlinearity": {"measured": trend, "laws": laws},
         "noise_nrmse": noise_level(data),
     }
+
+
+def fit_seed001(sd: SessionData, method: str = "nelder-mead", law: str = "poly", force: bool = False, max_rate_Hz: float = MAX_RATE_HZ,
+                max_s: float = MAX_S, executor: Any = "auto", budget: str = "standard") -> dict[str, Any] | None:
+    """Identify the Hammerstein model with one method, or with ``method="all"`` compare Nelder-Mead (several starts),
+    GA and NSGA-II (several seeds) on the same records (``compare`` below). None when the session has
+    no records that can tell it."""
+    if method == "all":
+        b = BUDGETS[budget]
+        data = prepare(sd, force, b.max_rate_Hz, b.max_s)
+        return None if data is None else compare(data, law, budget=budget, executor=executor)
+    data = prepare(sd, force, max_rate_Hz, max_s)
+    if data is None:
+        return None
+    if method == "nsga2":
+        fit = fit_nsga2(data.fit, law=law, pop_size=40, n_gen=40, executor=executor)
+    else:
+        fit = fit_sequential(data.fit, method=method, law=law, executor=executor)
+    return summarise(fit, data)
