@@ -21,7 +21,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from labrig import fault_matrix as fm  # noqa: E402
+from bench import fault_cells as fm  # noqa: E402
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,8 +1,13 @@
 """Test-session settings shared by every test file."""
 
 import os
+import sys
+from pathlib import Path
 
 import pytest
+
+# test and benchmark tooling lives under bench/ (not in the application): ``from bench import ...`` needs the root
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")  # the live window tests need no display
 

@@ -1,6 +1,6 @@
 """Faults injected with the drive live: exit 3, the drive at 0 V (read back, or declared unknown with the
 link gone and put there by the DAQ's watchdog), the session file opens, finished steps intact, the step in
-flight kept and marked. A fast subset of the matrix (``labrig.fault_matrix``); all of it:
+flight kept and marked. A fast subset of the matrix (``bench/fault_cells.py``); all of it:
 ``python bench/fault_matrix.py``."""
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import tomli_w
 
 from drivers.daq_watchdog import WALL_FLOOR_S
 
-from labrig import fault_matrix as fm
+from bench import fault_cells as fm
 from labrig.clock import ScaledClock
 from labrig.simulate import rig_file_data
 from labrig.store import SessionReader
