@@ -92,7 +92,7 @@ def main(argv: list[str] | None = None) -> int:
     except InstrumentError as e:
         elapsed, error, wd = time.perf_counter() - t_start, f"{type(e).__name__}: {e}", rig.watchdog
     finally:
-        rig.abort()
+        rig.safe()
         rig.disarm_watchdog()
         parent.send("stop")
         proc.join(5)

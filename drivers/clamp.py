@@ -12,6 +12,7 @@ import sys
 from typing import Any, Callable, Protocol
 
 from drivers.errors import InstrumentErrorReply, InstrumentTimeout, MalformedReply
+from drivers.instrument import Instrument
 from drivers.serial_port import Command, SerialInstrument, SerialLike, io_errors
 from drivers.transcript import Transcript
 
@@ -64,12 +65,15 @@ class MotorClamp(SerialInstrument):
         except (ValueError, AssertionError):
             raise MalformedReply(self.name, f"reply {reply!r} to F?") from None
 
-    def _safe_state(self) -> None:
+    def safe(self) -> bool:
         self._query(self.stop)  # a moving clamp stops where it is; it never releases the strip
+        return True
 
 
-class OperatorClamp:
+class OperatorClamp(Instrument):
     """A manual clamp: the operator is asked to set the force (the load cell then confirms it)."""
+
+    name = "clamp"
 
     def __init__(self, ask: Callable[[str], None] | None = None):
         self._ask = ask or (lambda msg: input(msg))

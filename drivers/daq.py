@@ -12,7 +12,7 @@ trigger on ``/<device>/ai/StartTrigger``, written and started first (it arms and
 AI task then starts both on the same sample clock edge, so sample k of the drive and of every input
 belong to the same instant.
 
-Safety: ``close()``, ``abort()``, ``stop()`` and any exception during a record put 0 V on the drive;
+Safety: ``close()``, ``safe()``, ``stop()`` and any exception during a record put 0 V on the drive;
 ``drive_readback_V()`` reads the drive back through ``voltage_channel`` so a caller can verify it.
 Timeouts are seconds of the rig's clock (``time_scale`` rig seconds per wall second; 1 on a real bench),
 never shorter than ``wall_floor_s`` wall seconds (the host's and the transport's own latency).
@@ -42,6 +42,7 @@ from nidaqmx.task._task import _TaskAlternateConstructor
 from drivers.daq_watchdog import DriveWatchdog
 from drivers.errors import (BufferOverflow, Disconnected, InstrumentError, InstrumentErrorReply,
                             InstrumentTimeout)
+from drivers.instrument import Instrument
 from drivers.transcript import CallReplayer, Transcript
 
 KEYS = ("t_s", "voltage_V", "current_A", "displacement_m")
@@ -69,7 +70,7 @@ def _digest(a: np.ndarray | None) -> str | None:
     return None if a is None else hashlib.sha256(to_bytes(a)).hexdigest()
 
 
-class DaqRig:
+class DaqRig(Instrument):
     """AO drive + 3 AI channels on one NI DAQ device, SI units in and out."""
 
     def __init__(
@@ -297,7 +298,7 @@ class DaqRig:
             done = True
         finally:
             if not done:
-                self.abort()  # an error, or the caller stopped early: 0 V on the drive before anything else
+                self.safe()  # an error, or the caller stopped early: 0 V on the drive before anything else
         self._release()  # the output now holds the drive's last sample
         if self.transcript is not None:
             whole = {k: np.concatenate([p[k] for p in parts]) for k in KEYS}
@@ -315,7 +316,7 @@ class DaqRig:
                 with self._errors("start_continuous"):
                     self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, self._wall(10.0))
             except BaseException:
-                self.abort()
+                self.safe()
                 raise
             return b""
 
@@ -336,7 +337,7 @@ class DaqRig:
                 with self._errors("read_block"):
                     self._reader.read_many_sample(raw, n, timeout=self._wall(timeout_s))
             except BaseException:
-                self.abort()
+                self.safe()
                 raise
             out = self._scale(raw, self._pos)
             return to_bytes(*(out[k] for k in KEYS))
@@ -377,7 +378,9 @@ class DaqRig:
         """Write 0 V to the drive now (stops anything running)."""
         self._call("zero_output", {}, lambda: (self._zero(), b"")[1])
 
-    def abort(self) -> bool:
+    has_output = True  # the drive
+
+    def safe(self) -> bool:
         """Emergency stop: release everything and try to put 0 V out. Never raises; True if 0 V was confirmed."""
         if self._replay is not None:
             return True
@@ -413,7 +416,7 @@ class DaqRig:
         if exc_type is None:
             self.close()
         else:  # do not mask the original error with a failure to zero
-            if self.abort():
+            if self.safe():
                 self.disarm_watchdog()
             self._closed = True
             if self._channel is not None:

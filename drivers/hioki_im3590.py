@@ -119,10 +119,11 @@ class HiokiIM3590(VisaInstrument):
         self.configure_log_sweep(f_start_Hz, f_stop_Hz, points, ac_V, bias_V)
         return self.measure()
 
-    def safe(self) -> None:
+    def safe(self) -> bool:
         """DC bias off and to 0 V, level to the minimum."""
         self._send(":DCBias OFF")
         self._send(":DCBias:LEVel 0")
         self._send(f":LEVel:VOLTage {fmt(self.model.ac_range_V[0])}")
         self.check_errors()
+        return True
 

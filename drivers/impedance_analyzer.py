@@ -134,10 +134,11 @@ class ImpedanceAnalyzer(VisaInstrument):
         self.configure_log_sweep(f_start_Hz, f_stop_Hz, points, ac_V, bias_V)
         return self.measure()
 
-    def safe(self) -> None:
+    def safe(self) -> bool:
         """Bias off and to 0 V, AC amplitude to the instrument's minimum."""
         self._send(":SOUR:BIAS:STAT OFF")
         self._send(":SOUR1:BIAS:VOLT 0")
         self._send(":SOUR1:VOLT MIN")
         self.check_errors()
+        return True
 

@@ -5,7 +5,7 @@ turn pyserial's failures into the errors of ``drivers.errors``, and declare comm
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Any, Iterator, Self
+from typing import Any, Iterator
 
 import serial
 
@@ -15,6 +15,7 @@ except ImportError:  # pragma: no cover - Windows
     _TermiosError = OSError
 
 from drivers.errors import Disconnected, InstrumentError, InstrumentTimeout
+from drivers.instrument import Instrument
 from drivers.transcript import RecordingSerial, Transcript
 
 SerialLike = Any  # pyserial Serial, RecordingSerial, ReplaySerial: write/read/read_until/in_waiting/close
@@ -76,7 +77,7 @@ class Command:
         return self.template.format(**kwargs).encode("ascii")
 
 
-class SerialInstrument:
+class SerialInstrument(Instrument):
     """Base of the serial drivers: owns the port, maps errors, closes safely, context manager."""
 
     default_name = "serial"
@@ -111,15 +112,16 @@ class SerialInstrument:
         with io_errors(self.name):
             return bytes(self.port.read_until(terminator, size))
 
-    def _safe_state(self) -> None:
-        """Put the instrument in its safe state before the port closes (override)."""
+    def safe(self) -> bool:
+        """Put the instrument in its safe state (before the port closes; override)."""
+        return True
 
     def close(self) -> None:
         """Leave the instrument safe and close the port; idempotent, never raises for a dead port."""
         if self.closed:
             return
         try:
-            self._safe_state()
+            self.safe()
         except InstrumentError:
             pass  # a dead line cannot be made safer; closing must still happen
         finally:
@@ -128,9 +130,3 @@ class SerialInstrument:
                 self.port.close()
             except (serial.SerialException, OSError, _TermiosError):
                 pass
-
-    def __enter__(self) -> Self:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()

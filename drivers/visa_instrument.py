@@ -18,6 +18,7 @@ import pyvisa
 from pyvisa import constants
 
 from drivers.errors import Disconnected, InstrumentError, InstrumentTimeout, MalformedReply
+from drivers.instrument import Instrument
 from drivers.scpi import raise_for_errors
 from drivers.transcript import RecordingMessages, Transcript
 
@@ -27,8 +28,10 @@ _LOST = {constants.StatusCode.error_connection_lost, constants.StatusCode.error_
          constants.StatusCode.error_invalid_object, constants.StatusCode.error_closing_failed}
 
 
-class VisaInstrument:
+class VisaInstrument(Instrument):
     """Message-based instrument over pyvisa(-py); ``device`` names it in every error."""
+
+    has_output = True  # an analyser's source (AC level and DC bias) drives the strip
 
     def __init__(self, resource: str | Any, *, transcript: Transcript | None = None, device: str = "impedance",
                  timeout_s: float = 5.0, reset: bool = False, resource_manager: pyvisa.ResourceManager | None = None):
@@ -59,8 +62,13 @@ class VisaInstrument:
         """Raise ``InstrumentErrorReply`` if the instrument reports any error."""
         raise_for_errors(self.device, self.errors())
 
-    def safe(self) -> None:
-        """Put the source in its safe state (override)."""
+    @property
+    def name(self) -> str:
+        return self.device
+
+    def safe(self) -> bool:
+        """Put the source in its safe state (override); raises when the instrument cannot be reached."""
+        return True
 
     # ---- connection -------------------------------------------------------------------------
 
@@ -182,9 +190,3 @@ class VisaInstrument:
         if self._rm is not None:
             self._rm.close()
             self._rm = None
-
-    def __enter__(self) -> "VisaInstrument":
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()

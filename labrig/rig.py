@@ -30,6 +30,7 @@ from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
 from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
+from drivers.instrument import Instrument
 from drivers import analyser_models
 from drivers.analysers import open_analyser
 from drivers.impedance_analyzer import ImpedanceAnalyzer
@@ -192,6 +193,11 @@ class Rig:
     transcript: Transcript = field(default_factory=Transcript)
 
     @property
+    def instruments(self) -> dict[str, Instrument]:
+        """Every instrument of the rig by its rig-file name, the drive first (the order ``safe()`` and ``close()`` use)."""
+        return {"daq": self.daq, "impedance": self.analyzer, "keyence": self.laser, "loadcell": self.loadcell, "clamp": self.clamp}
+
+    @property
     def limits(self) -> SafetyCfg:
         return self.config.safety
 
@@ -229,15 +235,18 @@ class Rig:
     def safe(self) -> SafeState:
         """Drive to 0 V first, then everything else safe, then read the drive back. Never raises.
 
-        The drive counts as safe only when read back at 0 V (``SafeState.verified``): ``abort()``'s own
-        word is not enough, since a write to a dead link cannot be confirmed."""
+        Every instrument with an output (``Instrument.has_output``: the drive, the analyser's source) is made
+        safe, the drive first. The drive counts as safe only when read back at 0 V (``SafeState.verified``):
+        ``safe()``'s own word is not enough, since a write to a dead link cannot be confirmed."""
         problems = []
-        if not self.daq.abort():
-            problems.append("daq: could not write 0 V to the drive")
-        try:
-            self.analyzer.safe()
-        except Exception as exc:  # a dead instrument must not stop the others being made safe
-            problems.append(f"impedance: {exc}")
+        for name, dev in self.instruments.items():
+            if not dev.has_output:
+                continue
+            try:
+                if not dev.safe():
+                    problems.append(f"{name}: could not write 0 V to the {'drive' if dev is self.daq else 'output'}")
+            except Exception as exc:  # a dead instrument must not stop the others being made safe
+                problems.append(f"{name}: {exc}")
         if self.daq.replaying:
             return SafeState(0.0, tuple(problems))  # a replay drives nothing
         try:
@@ -246,7 +255,7 @@ class Rig:
             problems.append(f"daq: drive read-back failed: {exc}")
             return SafeState(None, tuple(problems))
         if abs(drive) > ZERO_TOL_V and not problems:  # written but not there: try once more, then say so
-            self.daq.abort()
+            self.daq.safe()
             try:
                 drive = self.daq.drive_readback_V()
             except Exception as exc:
@@ -256,7 +265,7 @@ class Rig:
 
     def close(self) -> None:
         self.safe()
-        for dev in (self.daq, self.analyzer, self.laser, self.loadcell, self.clamp):
+        for dev in self.instruments.values():
             try:
                 dev.close()
             except Exception:

@@ -34,7 +34,7 @@ def sim(bench: StandInBench):
 def rig(sim: SimDaq):
     r = DaqRig("SimDev1", grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V)
     yield r
-    r.abort()
+    r.safe()
 
 
 def _sine(n: int, fs: float, f: float = 5.0, amp: float = 0.8) -> np.ndarray:
@@ -170,7 +170,7 @@ def test_disconnect_then_server_back(sim: SimDaq) -> None:
     sim.inject("disconnect")
     with pytest.raises(Disconnected):
         rig.run_finite(np.zeros(100), 1000.0)
-    assert rig.abort() is False  # cannot confirm 0 V on a dead link, and says so
+    assert rig.safe() is False  # cannot confirm 0 V on a dead link, and says so
     sim.clear_fault()
     with DaqRig(grpc_target=sim.address) as again:
         assert len(again.run_finite(np.zeros(100), 1000.0)["t_s"]) == 100
@@ -226,7 +226,7 @@ def test_local_path_without_ni_daqmx_is_a_clear_error() -> None:
     rig = DaqRig("Dev1")  # plain nidaqmx.Task(): needs the NI-DAQmx driver on this machine
     with pytest.raises((Disconnected, InstrumentErrorReply)):
         rig.run_finite(np.zeros(10), 1000.0)
-    assert rig.abort() is False
+    assert rig.safe() is False
 
 
 def test_start_trigger_order_matters_as_on_hardware(sim: SimDaq) -> None:

@@ -103,7 +103,7 @@ def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
         assert rig.drive_readback_V() == pytest.approx(1.0, abs=1e-3)
         t_lost = clock.now()
         sim.inject("disconnect")
-        assert rig.abort() is False  # cannot write 0 V over a dead link ...
+        assert rig.safe() is False  # cannot write 0 V over a dead link ...
         t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
         assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 0.25 * SCALE  # ... the device does it
         sim.clear_fault()
