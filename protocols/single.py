@@ -6,11 +6,13 @@ from __future__ import annotations
 from typing import Iterator
 
 import numpy as np
+from pydantic import Field
 
 from protocols.config import (
     AmplitudeSeriesSettings,
     ClampSettings,
     EisSettings,
+    MAX_PRESSURE_KPA,
     HarmonicSettings,
     MultisineSettings,
     SteppedSineSettings,
@@ -62,7 +64,7 @@ def amplitude_series_steps(s: AmplitudeSeriesSettings, prefix: str = "", **meta)
 class _AtPressure(Strict):
     """Single tests run at one clamping pressure (clamped and settled first)."""
 
-    pressure_kPa: float = 3062.0
+    pressure_kPa: float = Field(3062.0, gt=0, le=MAX_PRESSURE_KPA)
     clamp: ClampSettings = ClampSettings(pressures_kPa=[3062.0], settle_s=10.0)
 
 
