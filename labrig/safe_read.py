@@ -19,12 +19,13 @@ from labrig.errors import BadInput
 
 
 def open_regular(path: str | Path, what: str, max_bytes: int) -> BinaryIO:
-    """``path`` opened for binary reading if it is a regular file of at most ``max_bytes``, else ``BadInput``."""
+    """``path`` opened for binary reading if it is a regular file of at most ``max_bytes``, else ``BadInput``.
+    ``what`` names the file in messages ("rig file"); a missing one is "no such file" (or "no such rig file" and so on)."""
     p = Path(path)
     try:
         fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0))
     except FileNotFoundError:
-        raise BadInput(f"{p}: no such {what}") from None
+        raise BadInput(f"{p}: no such {what if what in ('rig file', 'protocol file') else 'file'}") from None
     except IsADirectoryError:
         raise BadInput(f"{p}: is a directory, not a {what}") from None
     except OSError as exc:
