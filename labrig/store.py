@@ -153,6 +153,7 @@ def check_path(path: str | Path) -> Path:
     p = Path(path)
     if not p.exists():
         raise BadInput(f"{p}: no such file")
+    from labrig.store_validate import check_file; check_file(p)  # noqa: E702 (no FIFO or device reaches HDF5)
     if p.is_dir():
         raise BadInput(f"{p}: is a directory, not a session file")
     try:
@@ -190,6 +191,7 @@ def open_for_update(path: str | Path) -> h5py.File:
     if not is_session(f):
         f.close()
         raise BadInput(f"{p}: not a labrig session (no /entry with a labrig_format attribute)")
+    from labrig.store_validate import validate_open; validate_open(f, p)  # noqa: E702 (hostile file: one line, closed)
     return f
 
 

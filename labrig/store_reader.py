@@ -19,6 +19,7 @@ import h5py
 import numpy as np
 
 from labrig import store as st
+from labrig import store_validate
 from labrig.errors import BadInput
 
 
@@ -77,6 +78,7 @@ class SessionReader:
         if not st.is_session(self._f):
             self._f.close()
             raise BadInput(f"{self.path}: not a labrig session (no /entry with a labrig_format attribute)")
+        store_validate.validate_open(self._f, self.path)  # a hostile file: one line (BadInput), closed
         self._entry = self._f["entry"]
 
     def close(self) -> None:
