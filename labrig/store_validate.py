@@ -37,8 +37,10 @@ MAX_ELEMENTS = 50_000_000  # one dataset (400 MB of float64): above any record a
 MAX_TEXT_BYTES = 64 << 20  # one text or JSON item (transcripts included)
 MAX_JSON_DEPTH = 64
 NUMERIC_KINDS = "biuf"
-# keys of step metadata and sample JSON whose value the fitter takes as a number
+# keys of step metadata and sample JSON whose value the fitter takes as a number (finite), and those it divides
+# by or takes the logarithm of (positive)
 NUMBER_SUFFIXES = ("_kPa", "_Hz", "_V", "_s", "_m", "_m2", "_N", "_A", "_ohm", "_C")
+POSITIVE_KEYS = ("pressure_kPa", "frequency_Hz", "fs_Hz", "period_s", "length_m", "width_m", "thickness_m", "clamp_area_m2", "clamp_length_m")
 
 
 class Hostile(BadInput):
@@ -107,20 +109,25 @@ def _walk(f: h5py.File, path: str | Path) -> None:
     """Every link hard, every object reached once, every dataset and attribute plain and bounded."""
     count = 0
 
-    def visit(name: str, link: Any) -> None:
+    def visit(name: str, link: Any) -> str | None:
+        # an exception raised in this callback would surface from HDF5's C loop as a SystemError: a message
+        # returned stops the visit instead
         nonlocal count
         count += 1
         if count > MAX_OBJECTS:
-            raise Hostile(f"{path}: over {MAX_OBJECTS} objects (not a session labrig wrote)")
+            return f"over {MAX_OBJECTS} objects (not a session labrig wrote)"
         where = "/" + one_line(name, 100)
         if isinstance(link, h5py.ExternalLink):
-            raise Hostile(f"{path}: {where}: external link to another file (refused: a session is one file)")
+            return f"{where}: external link to another file (refused: a session is one file)"
         if isinstance(link, h5py.SoftLink):
-            raise Hostile(f"{path}: {where}: soft link (labrig writes none; refused)")
+            return f"{where}: soft link (labrig writes none; refused)"
         if not isinstance(link, h5py.HardLink):
-            raise Hostile(f"{path}: {where}: link of an unknown kind")
+            return f"{where}: link of an unknown kind"
+        return None
 
-    f.visititems_links(visit)
+    problem = f.visititems_links(visit)
+    if problem is not None:
+        raise Hostile(f"{path}: {problem}")
     # labrig writes a tree: every object has one link (a second hard link, e.g. back to a parent, is a cycle)
     groups = [f]
     while groups:
@@ -289,8 +296,10 @@ class _Layout:
             for x in vals:
                 if x is None:
                     continue
-                if isinstance(x, bool) or not isinstance(x, (int, float)):
-                    self.fail(f"{where}.{k}", "is not a number")
+                if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+                    self.fail(f"{where}.{k}", "is not a finite number")
+                if k in POSITIVE_KEYS and not x > 0:
+                    self.fail(f"{where}.{k}", "is not positive")
 
     def text_ds(self, where: str, required: bool = True) -> str | None:
         ds = self.dataset(where, "OS", "scalar", required)
