@@ -31,7 +31,7 @@ from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.errors import BadInput, validation_error
 from labrig.safe_read import read_text_file
-from labrig.validation import StrictModel, Text
+from labrig.validation import StrictModel, Text, matching
 from labrig.physics import presets
 
 
@@ -39,8 +39,11 @@ from labrig.physics import presets
 AO_RANGE_V = 10.0  # the DAQ's analog output range: no safety limit above what the drive can put out
 LOADCELL_CAPACITY_N = 98.0  # Dacell UMMA-K10
 MAX_RIG_FILE_BYTES = 1 << 20
-Address = Annotated[str, StringConstraints(min_length=1, max_length=512, pattern=r"^[^\x00-\x1f\x7f]*$")]
-Channel = Annotated[str, StringConstraints(pattern=r"^[A-Za-z0-9_./-]{1,64}$")]
+Address = Annotated[str, StringConstraints(min_length=1, max_length=512), matching(r"[^\x00-\x20\x7f]+", "contains a space or a control character")]
+# what pyvisa opens: TCPIP0::host::5025::SOCKET, TCPIP::host::inst0::INSTR, GPIB0::17::INSTR, USB0::...::INSTR, ASRL/dev/ttyUSB0::INSTR
+VisaResource = Annotated[str, StringConstraints(max_length=512), matching(
+    r"(?i:TCPIP|GPIB|USB|ASRL|VXI|PXI)[^\x00-\x20:]*::[^\x00-\x20\x7f]+", "not a VISA resource name (e.g. TCPIP::192.168.0.5::5025::SOCKET)")]
+Channel = Annotated[str, matching(r"[A-Za-z0-9_./-]{1,64}", "not a device or channel name (letters, digits, _ . / -)")]
 
 
 class _Strict(StrictModel):
@@ -80,7 +83,7 @@ class ClampCfg(_Strict):
 
 
 class ImpedanceCfg(_Strict):
-    address: Address
+    address: VisaResource
 
 
 class DaqCfg(_Strict):

@@ -11,16 +11,32 @@ is never coerced to a number. An integer is still a valid float (TOML writes ``6
 
 from __future__ import annotations
 
+import re
 from typing import Annotated
 
-from pydantic import BaseModel, ConfigDict, StringConstraints
+from pydantic import AfterValidator, BaseModel, ConfigDict, StringConstraints
 
 STRICT = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False)
 
+
+def matching(pattern: str, problem: str) -> AfterValidator:
+    """A string check whose error says ``problem`` (pydantic's own message would print the regular expression)."""
+    rx = re.compile(pattern)
+
+    def check(value: str) -> str:
+        if not rx.fullmatch(value):
+            raise ValueError(problem)
+        return value
+
+    return AfterValidator(check)
+
+
+_NO_CONTROL = matching(r"[^\x00-\x1f\x7f]*", "contains a control character (NUL, newline, escape...)")
 # no C0 control character, no DEL: what a label, a name or an address never needs
-Text = Annotated[str, StringConstraints(max_length=200, pattern=r"^[^\x00-\x1f\x7f]*$")]
-NonEmptyText = Annotated[str, StringConstraints(min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]*$")]
-LongText = Annotated[str, StringConstraints(max_length=4000, pattern=r"^[^\x00-\x08\x0b-\x1f\x7f]*$")]  # notes: newlines and tabs allowed
+Text = Annotated[str, StringConstraints(max_length=200), _NO_CONTROL]
+NonEmptyText = Annotated[str, StringConstraints(min_length=1, max_length=200), _NO_CONTROL]
+# notes: newlines and tabs allowed
+LongText = Annotated[str, StringConstraints(max_length=4000), matching(r"[^\x00-\x08\x0b-\x1f\x7f]*", "contains a control character")]
 
 
 class StrictModel(BaseModel):
