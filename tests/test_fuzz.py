@@ -269,3 +269,16 @@ def test_serial_client_that_never_reads_does_not_stall_the_others():
         assert srv._clients and all(len(out) <= OUT_BUFFER_BYTES for out in srv._out.values())
         bad.close()
         good.close()
+
+
+RUN_OPTIONS = [
+    (["--time-scale", "0"], "--time-scale"), (["--time-scale", "inf"], "--time-scale"), (["--time-scale", "nan"], "clock.time_scale"),
+    (["--seed", "-1"], "--seed"), (["--preset", "nope"], "--preset"), (["--limit", "max_drive_V=inf"], "safety.max_drive_V"),
+    (["--limit", "max_force_N=true"], "--limit"),
+]
+
+
+@pytest.mark.parametrize("extra, says", RUN_OPTIONS, ids=[" ".join(o[0]) for o in RUN_OPTIONS])
+def test_run_options_garbage_is_one_line(tmp_path, extra, says):
+    line = _refusal(tmp_path, ["run", "eis", "--sim", "--quiet", *extra, "--out", str(tmp_path / "o.h5")])
+    assert says in line, line
