@@ -36,6 +36,8 @@ MAX_OBJECTS = 200_000  # links in a file: a paper sweep has ~1500
 MAX_ELEMENTS = 50_000_000  # one dataset (400 MB of float64): above any record a run or an import writes
 MAX_TEXT_BYTES = 64 << 20  # one text or JSON item (transcripts included)
 MAX_JSON_DEPTH = 64
+MAX_TOTAL_ELEMENTS = 200_000_000  # all datasets together: every element is read once on validation
+READ_SLICE = 1 << 20
 NUMERIC_KINDS = "biuf"
 # keys of step metadata and sample JSON whose value the fitter takes as a number (finite), and those it divides
 # by or takes the logarithm of (positive)
@@ -129,7 +131,7 @@ def _walk(f: h5py.File, path: str | Path) -> None:
     if problem is not None:
         raise Hostile(f"{path}: {problem}")
     # labrig writes a tree: every object has one link (a second hard link, e.g. back to a parent, is a cycle)
-    groups = [f]
+    groups, total = [f], 0
     while groups:
         g = groups.pop()
         _attrs(g, path)
@@ -142,6 +144,10 @@ def _walk(f: h5py.File, path: str | Path) -> None:
                 groups.append(obj)
             elif isinstance(obj, h5py.Dataset):
                 _dataset(obj, where, path)
+                total += obj.size
+                if total > MAX_TOTAL_ELEMENTS:
+                    raise Hostile(f"{path}: over {MAX_TOTAL_ELEMENTS} data elements in all (not a session labrig wrote)")
+                _read_all(obj)
                 _attrs(obj, path)
             else:
                 raise Hostile(f"{path}: {where}: a committed datatype or other non-data object")
@@ -167,6 +173,16 @@ def _dataset(ds: h5py.Dataset, where: str, path: str | Path) -> None:
         raise Hostile(f"{path}: {where}: {ds.shape} elements is over the {MAX_ELEMENTS} a session dataset may hold")
 
 
+def _read_all(ds: h5py.Dataset) -> None:
+    """Read it all once, a slice at a time: a damaged object header or chunk fails here, in one line, rather than
+    later inside the fitter or the report (HDF5 decodes both lazily)."""
+    if ds.ndim == 1:
+        for i in range(0, ds.shape[0], READ_SLICE):
+            ds[i : i + READ_SLICE]
+    else:
+        ds[()]
+
+
 def _attrs(obj: h5py.HLObject, path: str | Path) -> None:
     for key in obj.attrs:
         aid = h5py.h5a.open(obj.id, key.encode() if isinstance(key, str) else key)
@@ -177,6 +193,7 @@ def _attrs(obj: h5py.HLObject, path: str | Path) -> None:
             raise Hostile(f"{path}: {where}: attribute of type {one_line(str(dt), 40)} (labrig writes numbers and text only)")
         if n > 1_000_000:
             raise Hostile(f"{path}: {where}: attribute of {n} elements")
+        obj.attrs[key]  # read once: a damaged attribute fails here (see _dataset)
 
 
 # ---------------------------------------------------------------------------------------------- the layout the reader reads
