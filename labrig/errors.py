@@ -25,12 +25,12 @@ def one_line(text: str, limit: int = 60) -> str:
 def validation_error(exc: "ValidationError", source: str) -> BadInput:
     """The first problem of a pydantic validation as one line: ``source: field.path: problem (got value)``."""
     err = exc.errors()[0]
-    where = one_line(".".join(str(p) for p in err["loc"]) or "(top level)", 120)
+    where = one_line(".".join(str(p) for p in err["loc"]), 120)
     msg = "unknown field" if err["type"] == "extra_forbidden" else err["msg"].removeprefix("Value error, ")
     value = err.get("input")
     if err["type"] not in ("extra_forbidden", "missing") and isinstance(value, (bool, int, float, str)):
         msg += f" (got {one_line(repr(value), 40)})"
-    return BadInput(f"{source}: {where}: {msg}")
+    return BadInput(f"{source}: {where + ': ' if where else ''}{msg}")
 
 
 class SafetyTrip(Exception):
