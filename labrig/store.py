@@ -188,10 +188,10 @@ def open_for_update(path: str | Path) -> h5py.File:
             raise busy from None
         clear_write_flags(p)
         f = h5py.File(p, "a", libver="latest")
+    from labrig.store_validate import validate_open; validate_open(f, p)  # noqa: E702 (hostile file: one line, closed)
     if not is_session(f):
         f.close()
         raise BadInput(f"{p}: not a labrig session (no /entry with a labrig_format attribute)")
-    from labrig.store_validate import validate_open; validate_open(f, p)  # noqa: E702 (hostile file: one line, closed)
     return f
 
 

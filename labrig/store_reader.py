@@ -75,10 +75,10 @@ class SessionReader:
                 self.swmr = True
             except OSError as exc2:
                 raise BadInput(f"{self.path}: cannot open ({exc2})") from None
+        store_validate.validate_open(self._f, self.path)  # a hostile file: one line (BadInput), closed
         if not st.is_session(self._f):
             self._f.close()
             raise BadInput(f"{self.path}: not a labrig session (no /entry with a labrig_format attribute)")
-        store_validate.validate_open(self._f, self.path)  # a hostile file: one line (BadInput), closed
         self._entry = self._f["entry"]
 
     def close(self) -> None:

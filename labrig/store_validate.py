@@ -31,6 +31,7 @@ import h5py
 import numpy as np
 
 from labrig.errors import BadInput, one_line
+from labrig.store import FORMAT
 
 MAX_OBJECTS = 200_000  # links in a file: a paper sweep has ~1500
 MAX_ELEMENTS = 50_000_000  # one dataset (400 MB of float64): above any record a run or an import writes
@@ -65,6 +66,8 @@ def check_file(path: str | Path) -> None:
 def validate(f: h5py.File, path: str | Path) -> None:
     """Refuse (``Hostile``, a ``BadInput``) a file whose structure or content ``SessionReader`` cannot trust."""
     try:
+        if not _is_session(f):
+            raise BadInput(f"{path}: not a labrig session (no /entry with a labrig_format attribute)")
         _walk(f, path)
         _Layout(f, path).check()
     except BadInput:
@@ -72,6 +75,17 @@ def validate(f: h5py.File, path: str | Path) -> None:
     except (OSError, KeyError, ValueError, TypeError, RuntimeError, RecursionError, OverflowError, MemoryError) as exc:
         # HDF5 itself failed on a damaged object: name the problem, not the bytes
         raise Hostile(f"{path}: damaged HDF5 structure ({one_line(type(exc).__name__ + ': ' + str(exc), 100)})") from None
+
+
+def _is_session(f: h5py.File) -> bool:
+    """``store.is_session``, reading nothing before it knows the attribute is a plain string."""
+    entry = f.get("entry", getlink=True)
+    if not isinstance(entry, h5py.HardLink) or not isinstance(f["entry"], h5py.Group):
+        return False
+    value = f["entry"].attrs.get("labrig_format", "")
+    if isinstance(value, bytes):
+        value = value.decode("utf-8", "replace")
+    return isinstance(value, str) and value.startswith(FORMAT)
 
 
 def validate_open(f: h5py.File, path: str | Path) -> None:
