@@ -22,16 +22,18 @@ import difflib
 import math
 import os
 import sys
-import tomllib
+from array import array
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import Field, ValidationError, model_validator
 
 from labrig import __version__
-from labrig.errors import BadInput
+from labrig.errors import BadInput, one_line
+from labrig.safe_read import read_text_file, text_stream
+from labrig.validation import NonEmptyText, StrictModel, Text
 from labrig.events import Block, RunStart, RunStop, StepEnd, StepPlan, StepStart, daq_stream, eis_stream, force_stream, new_uid
 
 TIME_KINDS = ("step", "harmonic", "stepped_sine", "multisine", "free")
@@ -39,10 +41,14 @@ TIME_REQUIRED = ("t_s", "v_V", "i_A", "disp_m")
 TIME_OPTIONAL = ("force_N",)
 EIS_REQUIRED = ("f_Hz", "z_re_ohm", "z_im_ohm")
 BLOCK_ROWS = 65536  # rows per Block event: the size the live runner's blocks have at most
+MAX_MANIFEST_BYTES = 1 << 20  # a manifest is a page of TOML
+MAX_CSV_BYTES = 512 << 20  # one record's CSV: 5 M rows of 5 columns of ~20 characters
+MAX_ROWS = 5_000_000  # one record (the most a run's record may hold, protocols.steps.MAX_RECORD_SAMPLES)
+MAX_TOTAL_ROWS = 20_000_000  # the whole import: ~800 MB of float64 columns at most
+MAX_RECORDS = 10_000
 
 
-class Specimen(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+class Specimen(StrictModel):
     length_m: float = Field(gt=0, lt=1)
     width_m: float = Field(gt=0, lt=1)
     thickness_m: float = Field(gt=0, lt=0.01)
@@ -50,16 +56,15 @@ class Specimen(BaseModel):
     medium: Literal["water", "air"]
 
 
-class Record(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+class Record(StrictModel):
     kind: Literal["step", "harmonic", "stepped_sine", "multisine", "free", "eis"]
-    file: str = Field(min_length=1)
-    pressure_kPa: float = Field(gt=0)
-    frequency_Hz: float | None = Field(default=None, gt=0)
-    amplitude_V: float | None = Field(default=None, gt=0)
-    period_s: float | None = Field(default=None, gt=0)
-    temperature_C: float | None = Field(default=None, gt=-273.15)
-    label: str | None = None
+    file: NonEmptyText
+    pressure_kPa: float = Field(gt=0, le=1e5)  # 100 MPa: far above any clamp
+    frequency_Hz: float | None = Field(default=None, gt=0, le=1e7)
+    amplitude_V: float | None = Field(default=None, gt=0, le=1000.0)
+    period_s: float | None = Field(default=None, gt=0, le=1e6)
+    temperature_C: float | None = Field(default=None, gt=-273.15, le=1000.0)
+    label: Text | None = Field(default=None, min_length=1)
 
     @model_validator(mode="after")
     def _needs(self) -> "Record":
@@ -71,10 +76,9 @@ class Record(BaseModel):
         return self
 
 
-class Manifest(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+class Manifest(StrictModel):
     specimen: Specimen
-    record: list[Record] = Field(min_length=1)
+    record: list[Record] = Field(min_length=1, max_length=MAX_RECORDS)
 
 
 @dataclass
@@ -97,7 +101,7 @@ def _where(loc: tuple, raw: dict[str, Any]) -> str:
         i = parts[1]
         rec = raw.get("record", [])
         name = rec[i].get("file") if i < len(rec) and isinstance(rec[i], dict) else None
-        out.append(f"record #{i + 1}" + (f" ({name})" if isinstance(name, str) else ""))
+        out.append(f"record #{i + 1}" + (f" ({one_line(name)})" if isinstance(name, str) else ""))
         parts = parts[2:]
     elif parts:
         out.append(f"[{parts[0]}]" if parts[0] == "specimen" else str(parts[0]))
@@ -109,16 +113,7 @@ def _where(loc: tuple, raw: dict[str, Any]) -> str:
 
 def load_manifest(path: str | Path) -> tuple[Manifest, dict[str, Any]]:
     p = Path(path)
-    try:
-        raw = tomllib.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise BadInput(f"{p}: no such file") from None
-    except IsADirectoryError:
-        raise BadInput(f"{p}: is a directory, not a manifest") from None
-    except UnicodeDecodeError:
-        raise BadInput(f"{p}: not UTF-8 text") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise BadInput(f"{p}: not valid TOML: {exc}") from None
+    raw = read_text_file(p, "manifest", MAX_MANIFEST_BYTES, toml=True)
     try:
         return Manifest.model_validate(raw), raw
     except ValidationError as exc:
@@ -129,44 +124,43 @@ def load_manifest(path: str | Path) -> tuple[Manifest, dict[str, Any]]:
             key = str(err["loc"][-1])
             model = {0: Manifest, 1: Specimen if err["loc"][0] == "specimen" else Record}.get(min(len(err["loc"]) - 1, 1), Record)
             close = difflib.get_close_matches(key, list(model.model_fields), n=1)
-            msg = f"unknown key {key!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
+            msg = f"unknown key {one_line(repr(key), 40)}" + (f" (did you mean {close[0]!r}?)" if close else "")
             where = _where(tuple(err["loc"][:-1]), raw) or "top level"
         elif err["type"] == "missing":
             msg = "missing"
         else:
             msg = err["msg"].removeprefix("Value error, ")
             if "input" in err and not isinstance(err["input"], (dict, list)):
-                msg += f" (got {err['input']!r})"
+                msg += f" (got {one_line(repr(err['input']), 40)})"
         more = f" (and {exc.error_count() - 1} more problems)" if exc.error_count() > 1 else ""
         raise BadInput(f"{p}: {where + ': ' if where else ''}{msg}{more}") from None
 
 
 def read_csv(path: Path, required: tuple[str, ...], optional: tuple[str, ...] = ()) -> Table:
-    """A CSV with a header row; every cell a finite number; every row as long as the header."""
-    try:
-        fh = open(path, newline="", encoding="utf-8")
-    except FileNotFoundError:
-        raise BadInput(f"{path}: no such file") from None
-    except OSError as exc:
-        raise BadInput(f"{path}: cannot read ({exc.strerror})") from None
+    """A CSV with a header row; every cell a finite number; every row as long as the header.
+
+    Only a regular file of at most ``MAX_CSV_BYTES`` and ``MAX_ROWS`` rows is read, and an error line says
+    where (line, column) and what is wrong but never prints the file's text: a manifest may point at any file.
+    """
+    fh = text_stream(path, "CSV file", MAX_CSV_BYTES)
     with fh:
         reader = csv.reader(fh)
         try:
             header = [h.strip() for h in next(reader)]
         except StopIteration:
             raise BadInput(f"{path}: empty file (expected a header row {', '.join(required)})") from None
-        except (csv.Error, UnicodeDecodeError) as exc:
-            raise BadInput(f"{path}: line 1: not CSV text ({exc})") from None
-        for name in header:
-            if name not in required and name not in optional:
-                allowed = ", ".join(required + optional)
-                raise BadInput(f"{path}: line 1: unknown column {name!r} (expected {allowed})")
+        except (csv.Error, UnicodeDecodeError):
+            raise BadInput(f"{path}: line 1: not CSV text (expected a header row {', '.join(required)})") from None
+        allowed = required + optional
+        for k, name in enumerate(header):
+            if name not in allowed:
+                raise BadInput(f"{path}: line 1, column {k + 1}: unknown column name (expected {', '.join(allowed)})")
             if header.count(name) > 1:
                 raise BadInput(f"{path}: line 1: column {name!r} appears twice")
         missing = [c for c in required if c not in header]
         if missing:
             raise BadInput(f"{path}: line 1: missing column {missing[0]!r} (header: {', '.join(header)})")
-        cols: list[list[float]] = [[] for _ in header]
+        cols = [array("d") for _ in header]  # 8 bytes a value, not a Python float object each
         try:
             for row in reader:
                 line = reader.line_num
@@ -174,19 +168,21 @@ def read_csv(path: Path, required: tuple[str, ...], optional: tuple[str, ...] = 
                     continue  # blank lines (a trailing newline) carry nothing
                 if len(row) != len(header):
                     raise BadInput(f"{path}: line {line}: {len(row)} cells, the header has {len(header)}")
+                if len(cols[0]) >= MAX_ROWS:
+                    raise BadInput(f"{path}: over {MAX_ROWS} data rows (the most one record may hold)")
                 for k, cell in enumerate(row):
                     try:
                         v = float(cell)
                     except ValueError:
-                        raise BadInput(f"{path}: line {line}, column {header[k]}: not a number: {cell.strip()!r}") from None
+                        raise BadInput(f"{path}: line {line}, column {header[k]}: not a number") from None
                     if not math.isfinite(v):
-                        raise BadInput(f"{path}: line {line}, column {header[k]}: {cell.strip()} (every value must be finite)")
+                        raise BadInput(f"{path}: line {line}, column {header[k]}: {v} (every value must be finite)")
                     cols[k].append(v)
-        except (csv.Error, UnicodeDecodeError) as exc:
-            raise BadInput(f"{path}: line {reader.line_num}: not CSV text ({exc})") from None
+        except (csv.Error, UnicodeDecodeError):
+            raise BadInput(f"{path}: line {reader.line_num}: not CSV text (one quoted field too long or not UTF-8)") from None
     if not cols[0]:
         raise BadInput(f"{path}: no data rows after the header")
-    return Table(path, {name: np.array(c, dtype=np.float64) for name, c in zip(header, cols)})
+    return Table(path, {name: np.frombuffer(c, dtype=np.float64).copy() for name, c in zip(header, cols)})
 
 
 def _check_axis(table: Table, name: str, strictly_increasing: bool, positive: bool) -> None:
@@ -199,8 +195,20 @@ def _check_axis(table: Table, name: str, strictly_increasing: bool, positive: bo
         raise BadInput(f"{table.path}: line {k + 2}, column {name}: not increasing ({a[k - 1]:g} then {a[k]:g})")
 
 
-def load_record(base: Path, rec: Record) -> Table:
+def record_path(manifest: Path, index: int, rec: Record, allow_outside: bool = False) -> Path:
+    """Where record ``index`` (0-based) reads its CSV: relative to the manifest, and inside the manifest's
+    folder (symbolic links resolved) unless ``allow_outside``. A manifest from elsewhere cannot read ~/.ssh."""
+    base = manifest.parent
     path = base / rec.file
+    if not allow_outside:
+        inside = base.resolve()
+        if not path.resolve().is_relative_to(inside):
+            raise BadInput(f"{manifest}: record #{index + 1}: file {one_line(repr(rec.file))} is outside the manifest's folder "
+                           "(move it there, or run labrig import --allow-outside)")
+    return path
+
+
+def load_record(path: Path, rec: Record) -> Table:
     if rec.kind == "eis":
         table = read_csv(path, EIS_REQUIRED)
         _check_axis(table, "f_Hz", strictly_increasing=False, positive=True)
@@ -256,11 +264,18 @@ def _from_start(tab: Table) -> dict[str, np.ndarray]:
     return {**tab.columns, "t_s": tab.columns["t_s"] - tab.columns["t_s"][0]}
 
 
-def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = False) -> Path:
-    """Validate the manifest and its CSVs, then write the session file ``out``; returns its path."""
+def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = False, allow_outside: bool = False) -> Path:
+    """Validate the manifest and its CSVs, then write the session file ``out``; returns its path.
+    CSVs outside the manifest's folder are refused unless ``allow_outside``."""
     mpath = Path(manifest)
     m, raw = load_manifest(mpath)
-    tables = [load_record(mpath.parent, rec) for rec in m.record]
+    paths = [record_path(mpath, i, rec, allow_outside) for i, rec in enumerate(m.record)]
+    tables, total = [], 0
+    for path, rec in zip(paths, m.record):
+        tables.append(load_record(path, rec))
+        total += tables[-1].rows
+        if total > MAX_TOTAL_ROWS:
+            raise BadInput(f"{path}: the import holds over {MAX_TOTAL_ROWS} rows by this file (import it in parts)")
     out = Path(out)
     if out.exists() and not overwrite:
         raise BadInput(f"{out}: already exists (use --force to overwrite)")

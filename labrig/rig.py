@@ -19,12 +19,11 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import Field, StringConstraints, ValidationError
 
 from drivers.clamp import ClampController, MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
@@ -39,65 +38,79 @@ from drivers.loadcell import LoadCell
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.errors import BadInput, validation_error
+from labrig.safe_read import read_text_file
+from labrig.validation import StrictModel, Text, matching
 from labrig.physics import presets
 from labrig.specimen import OperatorCfg, SpecimenCfg, sample_record, user_record
 from labrig.suspenders import SuspendCfg
 
 
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+# the bench's physical limits (docs/input_validation.md says where each comes from)
+AO_RANGE_V = 10.0  # the DAQ's analog output range: no safety limit above what the drive can put out
+LOADCELL_CAPACITY_N = 98.0  # Dacell UMMA-K10
+MAX_RIG_FILE_BYTES = 1 << 20
+Address = Annotated[str, StringConstraints(min_length=1, max_length=512), matching(r"[^\x00-\x20\x7f]+", "contains a space or a control character")]
+# what pyvisa opens: TCPIP0::host::5025::SOCKET, TCPIP::host::inst0::INSTR, GPIB0::17::INSTR, USB0::...::INSTR, ASRL/dev/ttyUSB0::INSTR
+VisaResource = Annotated[str, StringConstraints(max_length=512), matching(
+    r"(?i:TCPIP|GPIB|USB|ASRL|VXI|PXI)[^\x00-\x20:]*::[^\x00-\x20\x7f]+", "not a VISA resource name (e.g. TCPIP::192.168.0.5::5025::SOCKET)")]
+Channel = Annotated[str, matching(r"[A-Za-z0-9_./-]{1,64}", "not a device or channel name (letters, digits, _ . / -)")]
+
+
+class _Strict(StrictModel):
+    """Every rig model: strict (labrig.validation): unknown keys, booleans as numbers, inf and nan refused."""
 
 
 class ClockCfg(_Strict):
-    time_scale: float = Field(1.0, gt=0)
-    epoch_wall: float | None = None
+    # a simulated bench runs 1..1e5 x; below 0.1 x a second of protocol is minutes of waiting (a typo, not a bench)
+    time_scale: float = Field(1.0, ge=0.1, le=1e5)
+    epoch_wall: float | None = Field(None, ge=0, le=4e9)  # unix time (4e9: year 2096)
 
 
 class SafetyCfg(_Strict):
     """Defaults safe for an IPMC in water: below electrolysis-heavy drive, well under the load cell's 98 N."""
 
-    max_drive_V: float = Field(2.0, gt=0)
-    max_current_A: float = Field(0.2, gt=0)
-    max_force_N: float = Field(90.0, gt=0)
+    max_drive_V: float = Field(2.0, gt=0, le=AO_RANGE_V)
+    max_current_A: float = Field(0.2, gt=0, le=10.0)
+    max_force_N: float = Field(90.0, gt=0, le=LOADCELL_CAPACITY_N)
     suspend: SuspendCfg = SuspendCfg()  # [safety.suspend]: conditions that hold the run (labrig.suspenders)
 
 
 class SampleCfg(_Strict):
     """``[sample]``: a preset strip, or a described one (``[sample.specimen]``, ``[sample.operator]``; labrig.specimen)."""
 
-    preset: str = "paper"
+    preset: Text = "paper"
     specimen: SpecimenCfg | None = None
     operator: OperatorCfg | None = None
 
 
 class KeyenceCfg(_Strict):
-    address: str
+    address: Address
     dialect: Literal["LK-G", "LK-2000"] = "LK-G"
 
 
 class LoadCellCfg(_Strict):
-    address: str
+    address: Address
 
 
 class ClampCfg(_Strict):
     mode: Literal["motor", "operator"] = "operator"
-    address: str | None = None
+    address: Address | None = None
 
 
 class ImpedanceCfg(_Strict):
-    address: str
+    address: VisaResource
     model: Literal[tuple(analyser_models.MODELS)] = analyser_models.LEGACY_MODEL  # type: ignore[valid-type]
 
 
 class DaqCfg(_Strict):
-    address: str = "local"
-    device: str = "Dev1"
-    drive_channel: str = "ao0"
-    voltage_channel: str = "ai0"
-    current_channel: str = "ai1"
-    displacement_channel: str = "ai2"
-    current_gain_A_per_V: float = Field(1e-3, gt=0)
-    displacement_m_per_V: float = Field(1e-3, gt=0)
+    address: Address = "local"
+    device: Channel = "Dev1"
+    drive_channel: Channel = "ao0"
+    voltage_channel: Channel = "ai0"
+    current_channel: Channel = "ai1"
+    displacement_channel: Channel = "ai2"
+    current_gain_A_per_V: float = Field(1e-3, gt=0, le=100.0)  # a current amplifier or shunt: 1 pA/V .. 100 A/V
+    displacement_m_per_V: float = Field(1e-3, gt=0, le=1.0)  # the laser's analog output: mm per volt
     watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False, strict=True)
 
 
@@ -129,14 +142,8 @@ def parse_rig(data: dict[str, Any], source: str) -> RigFile:
 
 
 def load_rig(path: str | Path) -> RigFile:
-    p = Path(path)
-    try:
-        data = tomllib.loads(p.read_text())
-    except FileNotFoundError:
-        raise BadInput(f"{path}: no such rig file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise BadInput(f"{path}: not valid TOML ({exc})") from None
-    return parse_rig(data, str(path))
+    """A rig file, every value checked (one line naming the file and field, ``BadInput``) before any instrument opens."""
+    return parse_rig(read_text_file(path, "rig file", MAX_RIG_FILE_BYTES, toml=True), str(path))
 
 
 ZERO_TOL_V = 0.02  # |drive read back| at or below this is 0 V (AI noise ~0.1 mV, 16 bits over ±10 V: 0.3 mV)

@@ -25,49 +25,41 @@ geometry come from it.
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import Field, ValidationError
 
-from labrig.errors import BadInput, validation_error
+from labrig.errors import validation_error
 from labrig.importer import Specimen
+from labrig.safe_read import read_text_file
+from labrig.validation import LongText, NonEmptyText, StrictModel, Text
+
+MAX_SPECIMEN_FILE_BYTES = 1 << 20
 
 
 class SpecimenCfg(Specimen):
-    """The import manifest's ``[specimen]`` plus what names the strip and its conditions."""
+    """The import manifest's ``[specimen]`` plus what names the strip and its conditions (strict: labrig.validation)."""
 
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
-    name: str = Field(min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")
+    name: NonEmptyText
     temperature_C: float | None = Field(None, gt=-273.15, lt=200)
-    batch: str | None = Field(None, max_length=200, pattern=r"^[^\x00-\x1f\x7f]*$")
-    notes: str | None = Field(None, max_length=4000)
+    batch: Text | None = None
+    notes: LongText | None = None
 
 
-class OperatorCfg(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    name: str = Field(min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")
-    notes: str | None = Field(None, max_length=4000)
+class OperatorCfg(StrictModel):
+    name: NonEmptyText
+    notes: LongText | None = None
 
 
-class SpecimenFile(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+class SpecimenFile(StrictModel):
     specimen: SpecimenCfg
     operator: OperatorCfg | None = None
 
 
 def load_specimen_file(path: str | Path) -> SpecimenFile:
     """Read and check a specimen file; ``BadInput`` (exit 2) naming the file and the field."""
-    p = Path(path)
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise BadInput(f"{path}: no such specimen file") from None
-    except (UnicodeDecodeError, IsADirectoryError, PermissionError) as exc:
-        raise BadInput(f"{path}: cannot read the specimen file ({type(exc).__name__})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise BadInput(f"{path}: not valid TOML ({exc})") from None
+    data = read_text_file(path, "specimen file", MAX_SPECIMEN_FILE_BYTES, toml=True)
     try:
         return SpecimenFile.model_validate(data)
     except ValidationError as exc:

@@ -153,6 +153,7 @@ def check_path(path: str | Path) -> Path:
     p = Path(path)
     if not p.exists():
         raise BadInput(f"{p}: no such file")
+    from labrig.store_validate import check_file; check_file(p)  # noqa: E702 (no FIFO or device reaches HDF5)
     if p.is_dir():
         raise BadInput(f"{p}: is a directory, not a session file")
     try:
@@ -187,6 +188,7 @@ def open_for_update(path: str | Path) -> h5py.File:
             raise busy from None
         clear_write_flags(p)
         f = h5py.File(p, "a", libver="latest")
+    from labrig.store_validate import validate_open; validate_open(f, p)  # noqa: E702 (hostile file: one line, closed)
     if not is_session(f):
         f.close()
         raise BadInput(f"{p}: not a labrig session (no /entry with a labrig_format attribute)")

@@ -20,6 +20,7 @@ import h5py
 import numpy as np
 
 from labrig import store as st
+from labrig import store_validate
 from labrig.errors import BadInput
 
 
@@ -72,6 +73,7 @@ class SessionReader:
             if not st._crashed_writer_flags(exc):
                 raise BadInput(f"{self.path}: cannot open ({exc})") from None
             self._f = self._open_crashed()
+        store_validate.validate_open(self._f, self.path)  # a hostile file: one line (BadInput), closed
         if not st.is_session(self._f):
             self._f.close()
             raise BadInput(f"{self.path}: not a labrig session (no /entry with a labrig_format attribute)")

@@ -38,6 +38,14 @@ def esr_bit(code: int) -> int:
     """The event status bit an error code sets: -1xx command, -2xx execution, -3xx device, -4xx query."""
     return {1: ESR_CME, 2: ESR_EXE, 4: ESR_QYE}.get(-code // 100, ESR_DDE) if code < 0 else ESR_DDE
 
+# The transport's limits, so a client cannot tie the instrument up. The longest message labrig's driver sends is
+# a 201-segment table (~7 KB, ``:SENS1:SEGM:DATA``); 64 KiB leaves room for any client's program message. A longer
+# line queues -363 "Input buffer overrun" (the SCPI-99 code) and the connection is closed: the bytes of a line
+# are scanned once, never re-scanned, so the CPU a client can cost is linear in what it sends.
+MAX_MESSAGE_BYTES = 65536
+MAX_CLIENTS = 8  # concurrent connections; one more is closed at once (E4990A-class instruments allow a few)
+SEND_TIMEOUT_S = 0.05  # a client that does not read its replies is dropped; others have their own threads
+
 
 class ScpiError(Exception):
     """Raised by a handler: the server queues ``code,"message"`` and sends no reply."""
@@ -365,34 +373,43 @@ class ScpiServer:
                 continue
             except OSError:
                 return
-            conn.settimeout(0.05)
+            conn.settimeout(SEND_TIMEOUT_S)
             conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
             with self._conn_lock:
                 if self._listener is not listener:
                     conn.close()
                     return
+                if len(self._conns) >= MAX_CLIENTS:
+                    conn.close()
+                    continue
                 self._conns.add(conn)
             self._spawn(self._serve, conn)
 
     def _serve(self, conn: socket.socket) -> None:
-        buf = b""
+        buf = bytearray()
         try:
             while not self.stopping.is_set() and conn in self._conns:
                 try:
-                    chunk = conn.recv(4096)
+                    chunk = conn.recv(65536)
                 except socket.timeout:
                     continue
                 if not chunk:
                     break
+                scan = len(buf)  # only the new bytes are searched for the terminator
                 buf += chunk
-                while b"\n" in buf:
-                    line, buf = buf.split(b"\n", 1)
+                while (i := buf.find(b"\n", scan)) >= 0:
+                    line = bytes(buf[:i])
+                    del buf[: i + 1]
+                    scan = 0
                     text = line.decode("ascii", errors="replace").strip()
                     if not text:
                         continue
                     reply = self.handle(text)
                     if reply is not None and conn in self._conns:
                         conn.sendall(reply.encode("latin-1") + b"\n")  # latin-1: binary blocks pass byte for byte
+                if len(buf) > MAX_MESSAGE_BYTES:
+                    self.push_error(-363, "Input buffer overrun")
+                    break
         except OSError:
             pass  # the client went away or drop() closed the socket
         finally:

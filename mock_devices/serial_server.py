@@ -25,6 +25,9 @@ import tty
 from typing import Callable, Literal
 
 COMMON_FAULTS = frozenset({"disconnect", "timeout", "garbage"})
+# Bytes a TCP client has not read yet, per client. A serial line has no flow control here: like a UART's buffer,
+# what does not fit is lost, and the one server thread never waits on a client that does not read.
+OUT_BUFFER_BYTES = 4096
 
 
 class MonotonicClock:
@@ -209,9 +212,11 @@ class _Server:
             timeout = 0.2 if interval is None else max(0.0, next_tick - time.monotonic())
             readers = [self._wake_r, *self._readers()]
             try:
-                ready, _, _ = select.select(readers, [], [], timeout)
+                ready, writable, _ = select.select(readers, self._writers(), [], timeout)
             except (OSError, ValueError):
-                ready = []  # an fd closed under us; the next pass sees the new set
+                ready, writable = [], []  # an fd closed under us; the next pass sees the new set
+            for w in writable:
+                self._on_writable(w)
             if self._wake_r in ready:
                 os.read(self._wake_r, 64)
             if self._pending is not None:
@@ -232,6 +237,9 @@ class _Server:
     def _open(self) -> None: ...
     def _close(self) -> None: ...
     def _readers(self) -> list: ...
+    def _writers(self) -> list:
+        return []
+    def _on_writable(self, w) -> None: ...
     def _on_readable(self, r) -> None: ...
     def _broadcast(self, data: bytes) -> None: ...
     def _drop(self) -> None: ...
@@ -308,6 +316,7 @@ class TcpSerialServer(_Server):
         self._port = port
         self._listener: socket.socket | None = None
         self._clients: list[socket.socket] = []
+        self._out: dict[socket.socket, bytearray] = {}  # per client: bytes waiting for it to read
 
     @property
     def address(self) -> str:
@@ -337,11 +346,13 @@ class TcpSerialServer(_Server):
                 conn.close()
                 return
             conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-            conn.settimeout(1.0)
+            conn.setblocking(False)  # a client that does not read never blocks the one server thread
             self._clients.append(conn)
             return
         try:
             data = r.recv(4096)
+        except (BlockingIOError, InterruptedError):
+            return
         except OSError:
             data = b""
         if not data:
@@ -352,8 +363,28 @@ class TcpSerialServer(_Server):
     def _send(self, conn: socket.socket, data: bytes) -> None:
         if not data:
             return
+        out = self._out.setdefault(conn, bytearray())
+        if not out:
+            try:
+                data = data[conn.send(data):]
+            except (BlockingIOError, InterruptedError):
+                pass
+            except OSError:
+                self._forget(conn)
+                return
+        out += data[: OUT_BUFFER_BYTES - len(out)]  # the rest is lost, as bytes nobody reads off a UART
+
+    def _writers(self) -> list:
+        return [c for c, out in self._out.items() if out]
+
+    def _on_writable(self, conn: socket.socket) -> None:
+        out = self._out.get(conn)
+        if not out:
+            return
         try:
-            conn.sendall(data)
+            del out[: conn.send(out)]
+        except (BlockingIOError, InterruptedError):
+            pass
         except OSError:
             self._forget(conn)
 
@@ -362,6 +393,7 @@ class TcpSerialServer(_Server):
             self._send(conn, data)
 
     def _forget(self, conn: socket.socket) -> None:
+        self._out.pop(conn, None)
         if conn in self._clients:
             self._clients.remove(conn)
         try:

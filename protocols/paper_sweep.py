@@ -8,7 +8,9 @@ from __future__ import annotations
 
 from typing import Iterator
 
-from protocols.config import AmplitudeSeriesSettings, ClampSettings, EisSettings, HarmonicSettings, SteppedSineSettings, StepSettings, Strict
+from pydantic import Field
+
+from protocols.config import MAX_WAIT_S, AmplitudeSeriesSettings, ClampSettings, EisSettings, HarmonicSettings, SteppedSineSettings, StepSettings, Strict
 from protocols.single import amplitude_series_steps, eis_steps, harmonic_steps, stepped_sine_steps, step_steps
 from protocols.steps import Settle, Step, clamp_steps
 
@@ -19,7 +21,7 @@ class PaperSweep(Strict):
     step: StepSettings = StepSettings()
     harmonic: HarmonicSettings = HarmonicSettings()
     stepped_sine: SteppedSineSettings = SteppedSineSettings()
-    rest_s: float = 20.0  # at 0 V between tests, so each starts with the strip relaxed
+    rest_s: float = Field(20.0, ge=0, le=MAX_WAIT_S)  # at 0 V between tests, so each starts with the strip relaxed
     amplitude_series: AmplitudeSeriesSettings | None = None  # not in the paper: for the diagnosis
 
 

@@ -11,6 +11,7 @@ Anything wrong is refused with one line naming the file, the field and the probl
 
 from __future__ import annotations
 
+import math
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
@@ -32,7 +33,15 @@ from protocols.single import (
     StepProtocol,
     single_plan,
 )
-from protocols.steps import Step
+from protocols.steps import PlanTooLarge, Record, SetClamp, Step, step_duration
+
+# the budget of a whole plan, checked step by step as the plan is built (each record is checked before its
+# arrays are built, protocols.steps.check_record): what the drive arrays of a materialised plan may hold, and
+# how long the plan may keep the bench (rig time; 24 h is over 30 paper sweeps)
+MAX_PLAN_SAMPLES = 20_000_000  # 160 MB of float64 drive arrays
+MAX_PLAN_S = 24 * 3600.0
+NOMINAL_CLAMP_AREA_M2 = 1.6e-5  # the paper's 4 mm x 4 mm: the plan checked at load time, before a rig is known
+MAX_FILE_BYTES = 1 << 20  # a protocol file is a page of TOML
 
 PlanFn = Callable[[Any, float], Iterator[Step]]
 
@@ -57,7 +66,21 @@ class LoadedProtocol:
     def plan(self, clamp_area_m2: float) -> list[Step]:
         """Materialise the plan (the runner validates and announces it before anything moves)."""
         _, fn = PROTOCOLS[self.name]
-        steps = list(fn(self.config, clamp_area_m2))
+        steps: list[Step] = []
+        samples, duration = 0, 0.0
+        try:
+            for s in fn(self.config, clamp_area_m2):  # each record is checked before it is built
+                steps.append(s)
+                if isinstance(s.action, SetClamp) and not (math.isfinite(s.action.force_N) and s.action.force_N > 0):
+                    raise PlanTooLarge(f"step {s.name}: clamp force {s.action.force_N:g} N is not a positive force")
+                samples += s.action.drive_V.size if isinstance(s.action, Record) else 0
+                duration += step_duration(s)
+                if samples > MAX_PLAN_SAMPLES:
+                    raise PlanTooLarge(f"the plan's records hold over {MAX_PLAN_SAMPLES:.3g} samples by step {s.name} (split it into several runs)")
+                if not duration <= MAX_PLAN_S:
+                    raise PlanTooLarge(f"the plan runs over {MAX_PLAN_S / 3600:g} h of rig time by step {s.name} (split it into several runs)")
+        except PlanTooLarge as exc:
+            raise BadInput(f"{self.source}: {exc}") from None
         names = [s.name for s in steps]
         dup = {n for n in names if names.count(n) > 1}
         if dup:
@@ -75,9 +98,11 @@ def preset_text(name: str) -> str:
 def _validate(name: str, data: dict[str, Any], source: str) -> LoadedProtocol:
     model, _ = PROTOCOLS[name]
     try:
-        return LoadedProtocol(name, model.model_validate(data), source)
+        loaded = LoadedProtocol(name, model.model_validate(data), source)
     except ValidationError as exc:
         raise validation_error(exc, source) from None
+    loaded.plan(NOMINAL_CLAMP_AREA_M2)  # the budget, before any rig is opened (the runner re-plans with the rig's area)
+    return loaded
 
 
 def from_dict(data: dict[str, Any], source: str) -> LoadedProtocol:
@@ -101,10 +126,7 @@ def load(spec: str) -> LoadedProtocol:
     path = Path(spec)
     if not path.exists():
         raise BadInput(f"{spec}: no such protocol file (bundled protocols: {', '.join(bundled())})")
-    try:
-        data = tomllib.loads(path.read_text())
-    except tomllib.TOMLDecodeError as exc:
-        raise BadInput(f"{spec}: not valid TOML ({exc})") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise BadInput(f"{spec}: cannot read ({exc})") from None
+    from labrig.safe_read import read_text_file
+
+    data = read_text_file(path, "protocol file", MAX_FILE_BYTES, toml=True)
     return from_dict(data, str(spec))

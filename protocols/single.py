@@ -6,11 +6,13 @@ from __future__ import annotations
 from typing import Iterator
 
 import numpy as np
+from pydantic import Field, model_validator
 
 from protocols.config import (
     AmplitudeSeriesSettings,
     ClampSettings,
     EisSettings,
+    MAX_PRESSURE_KPA,
     HarmonicSettings,
     MultisineSettings,
     SteppedSineSettings,
@@ -62,8 +64,15 @@ def amplitude_series_steps(s: AmplitudeSeriesSettings, prefix: str = "", **meta)
 class _AtPressure(Strict):
     """Single tests run at one clamping pressure (clamped and settled first)."""
 
-    pressure_kPa: float = 3062.0
+    pressure_kPa: float = Field(3062.0, gt=0, le=MAX_PRESSURE_KPA)
     clamp: ClampSettings = ClampSettings(pressures_kPa=[3062.0], settle_s=10.0)
+
+    @model_validator(mode="after")
+    def _one_pressure(self):
+        # a single test clamps at pressure_kPa: a different clamp.pressures_kPa would be silently ignored
+        if "pressures_kPa" in self.clamp.model_fields_set and self.clamp.pressures_kPa != [self.pressure_kPa]:
+            raise ValueError("clamp.pressures_kPa is not used by a single test: set pressure_kPa (or give [pressure_kPa])")
+        return self
 
 
 class EisProtocol(_AtPressure):

@@ -7,6 +7,7 @@ anything moves, validates every step against the rig and its safety limits, anno
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Union
 
@@ -89,6 +90,24 @@ def peak_drive(step: Step) -> float:
     return float(np.max(np.abs(step.action.drive_V))) if isinstance(step.action, Record) else 0.0
 
 
+# ---------------------------------------------------------------------------------------------- budget
+
+MAX_RECORD_SAMPLES = 5_000_000  # one record's drive and each recorded column (40 MB of float64 each)
+
+
+class PlanTooLarge(ValueError):
+    """A step would allocate more than the budget; raised before its arrays are built."""
+
+
+def check_record(name: str, fs_Hz: float, duration_s: float) -> None:
+    """Refuse a record whose samples (fs x duration) are over ``MAX_RECORD_SAMPLES`` before it is built."""
+    n = fs_Hz * duration_s
+    if not (math.isfinite(n) and n >= 1):
+        raise PlanTooLarge(f"step {name}: fs_Hz x duration gives {n:g} samples")
+    if n > MAX_RECORD_SAMPLES:
+        raise PlanTooLarge(f"step {name}: {n:.3g} samples (fs_Hz x {duration_s:.4g} s) is over the {MAX_RECORD_SAMPLES:.3g} a record may hold")
+
+
 # ---------------------------------------------------------------------------------------------- builders
 
 
@@ -98,17 +117,21 @@ def fs_for(frequency_Hz: float, floor_Hz: float = 200.0, cap_Hz: float = 2000.0,
 
 
 def step_record(prefix: str, amplitude_V: float, on_s: float, off_s: float, fs_Hz: float, pre_s: float = 1.0, **meta) -> Step:
+    name = f"{prefix}step_{amplitude_V:g}V"
+    check_record(name, fs_Hz, pre_s + on_s + off_s)
     drive = signals.step(amplitude_V, pre_s + on_s + off_s, fs_Hz, t_on_s=pre_s, t_off_s=pre_s + on_s)
     md = {"amplitude_V": amplitude_V, "on_s": on_s, "off_s": off_s, "pre_s": pre_s, "fs_Hz": fs_Hz, **meta}
-    return Step(f"{prefix}step_{amplitude_V:g}V", "step", Record(drive, fs_Hz), md)
+    return Step(name, "step", Record(drive, fs_Hz), md)
 
 
 def sine_record(prefix: str, kind: str, amplitude_V: float, frequency_Hz: float, cycles: float, fs_Hz: float, settle_cycles: float = 0.0, **meta) -> Step:
     """A sine record ending on a zero crossing (an integer number of cycles), then back to 0 V."""
     total = settle_cycles + cycles
+    name = f"{prefix}{kind}_{frequency_Hz:g}Hz_{amplitude_V:g}V"
+    check_record(name, fs_Hz, total / frequency_Hz)
     drive = np.append(signals.sine(amplitude_V, frequency_Hz, total / frequency_Hz, fs_Hz), 0.0)
     md = {"amplitude_V": amplitude_V, "frequency_Hz": frequency_Hz, "cycles": cycles, "settle_cycles": settle_cycles, "fs_Hz": fs_Hz, **meta}
-    return Step(f"{prefix}{kind}_{frequency_Hz:g}Hz_{amplitude_V:g}V", kind, Record(drive, fs_Hz), md)
+    return Step(name, kind, Record(drive, fs_Hz), md)
 
 
 def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float, period_s: float, periods: int, fs_Hz: float, seed: int, realisation: int,
@@ -116,6 +139,7 @@ def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float
     """One realisation of an odd random-phase multisine (protocols/multisine.py). Its metadata says what the
     estimator needs: the period grid, the excited and left-out lines, and how the transient is handled
     (``lead_in_s`` of cyclic prefix, or with no lead-in the first of ``periods`` is a transient period)."""
+    check_record(f"{prefix}multisine_r{realisation}", fs_Hz, lead_in_s + periods * period_s)
     ms = multisine.design(rms_V, f_min_Hz, f_max_Hz, period_s, fs_Hz, seed, realisation, lines_per_octave, skip_one_in, emphasis_Hz)
     md = {
         "rms_V": rms_V, "period_s": period_s, "periods": periods, "fs_Hz": fs_Hz, "realisation": realisation, "seed": seed,

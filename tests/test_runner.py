@@ -113,9 +113,9 @@ def test_plan_beyond_safety_limits_is_refused_before_anything_moves(tmp_path):
         ('protocol = "step"\n[step]\namplitdue_V = 1\n', "step.amplitdue_V: unknown field"),
         ('protocol = "nope"\n', "protocol: 'nope' is not one of"),
         ('[step]\namplitude_V = 1\n', "protocol: missing"),
-        ('protocol = "paper-sweep"\n[clamp]\npressures_kPa = [612, -5]\n', "clamp: Value error, pressures_kPa must be positive"),
+        ('protocol = "paper-sweep"\n[clamp]\npressures_kPa = [612, -5]\n', "clamp: pressures_kPa must be positive"),
         ('protocol = "step"\n[step\n', "not valid TOML"),
-        ('protocol = "eis"\n[eis]\nf_start_Hz = 100\nf_stop_Hz = 1\n', "eis: Value error, f_stop_Hz must be above f_start_Hz"),
+        ('protocol = "eis"\n[eis]\nf_start_Hz = 100\nf_stop_Hz = 1\n', "eis: f_stop_Hz must be above f_start_Hz"),
     ],
 )
 def test_bad_protocol_files_name_file_field_and_problem(tmp_path, text, message):

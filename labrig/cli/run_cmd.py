@@ -27,6 +27,17 @@ def _effects(scenario: str, seed: int) -> list[Any]:
         raise BadInput(f"--scenario: {exc.args[0]}") from None
 
 
+def _known_preset(ctx: click.Context, param: click.Parameter, value: str) -> str:
+    from labrig.physics import presets
+
+    if value not in presets.names():
+        raise click.BadParameter(f"unknown preset {value!r} (known: {', '.join(presets.names())})")
+    return value
+
+
+SEED = click.IntRange(0, 2**32 - 1)  # numpy's seed range
+
+
 class _Interrupts:
     """Ctrl-C at a terminal: hold the run at the next safe point (drive at 0 V) and ask: resume, pause or
     abort. Without a terminal: stop at the next safe point. A second Ctrl-C (or SIGTERM) stops now
@@ -71,9 +82,9 @@ class _Interrupts:
 @click.option("--sim", is_flag=True, help="run on a fresh simulated bench in this process")
 @click.option("--rig", "rig_path", type=click.Path(dir_okay=False), help="rig file of real (or `labrig sim`) instruments")
 @click.option("--scenario", default="none", show_default=True, help="hidden effect(s) on the simulated bench, joined with '+'")
-@click.option("--seed", default=0, show_default=True, type=int)
-@click.option("--preset", default="paper", show_default=True, help="the simulated strip")
-@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=float, help="simulated bench speed")
+@click.option("--seed", default=0, show_default=True, type=SEED)
+@click.option("--preset", default="paper", show_default=True, callback=_known_preset, help="the simulated strip")
+@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=click.FloatRange(0.1, 1e5), help="simulated bench speed")
 @click.option("--out", type=click.Path(dir_okay=False), help="session file to write (HDF5)")
 @click.option("--resume", "resume_path", type=click.Path(dir_okay=False), help="continue an interrupted session file")
 @click.option("--live", is_flag=True, help="show the live plot window")
@@ -148,10 +159,10 @@ def run_cmd(protocol, sim, rig_path, scenario, seed, preset, time_scale, out, re
 
 @click.command("sim")
 @click.option("--rig-out", required=True, type=click.Path(dir_okay=False), help="rig file to write")
-@click.option("--preset", default="paper", show_default=True)
+@click.option("--preset", default="paper", show_default=True, callback=_known_preset)
 @click.option("--scenario", default="none", show_default=True)
-@click.option("--seed", default=0, show_default=True, type=int)
-@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=float)
+@click.option("--seed", default=0, show_default=True, type=SEED)
+@click.option("--time-scale", default=DEFAULT_TIME_SCALE, show_default=True, type=click.FloatRange(0.1, 1e5))
 @click.option("--transport", type=click.Choice(["tcp", "pty"]), default="tcp", show_default=True, help="serial instruments on socket:// or a pty")
 @click.option("--impedance", "impedance_model", type=click.Choice(["IM3590", "E4990A", "SIM-WIDE"], case_sensitive=False),
               default="IM3590", show_default=True, help="the impedance analyser served (E4990A: 20 Hz floor)")

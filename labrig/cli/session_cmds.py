@@ -112,11 +112,12 @@ def inspect_cmd(file: str, as_json: bool) -> None:
 @click.argument("manifest", type=click.Path(dir_okay=True))
 @click.option("--out", required=True, type=click.Path(dir_okay=False), help="session file to write (.h5)")
 @click.option("--force", is_flag=True, help="overwrite --out if it exists")
-def import_cmd(manifest: str, out: str, force: bool) -> None:
+@click.option("--allow-outside", is_flag=True, help="read CSV files outside the manifest's folder")
+def import_cmd(manifest: str, out: str, force: bool, allow_outside: bool) -> None:
     """Measured data from elsewhere (TOML manifest of CSV files, DESIGN.md 6) into a session file."""
     from labrig.importer import import_manifest
 
-    path = import_manifest(manifest, out, overwrite=force)
+    path = import_manifest(manifest, out, overwrite=force, allow_outside=allow_outside)
     s = summary(str(path))
     rows = sum(sum(st["rows"].values()) for st in s["steps"])
     click.echo(f"wrote {len(s['steps'])} records ({rows} rows) to {path}")
