@@ -20,7 +20,7 @@ import h5py
 
 from labrig.events import Block
 from labrig.session_run import RunRequest, execute
-from labrig.store_writer import SessionWriter
+from labrig.store.writer import SessionWriter
 
 
 def write(events: list, path: Path, by_reference: bool) -> float:

@@ -17,7 +17,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from labrig import store_writer
+from labrig.store import writer as store_writer
 from labrig.events import Block, RunStart, RunStop, StepEnd, StepPlan, StepStart, daq_stream, new_uid
 from labrig.store import SessionReader
 

@@ -124,7 +124,7 @@ def _manifest_text(spec: dict[str, Any], records: list[dict[str, Any]], source: 
 
 def export_session(session: str | Path, out_dir: str | Path, overwrite: bool = False) -> Export:
     """Write ``out_dir/manifest.toml`` and the records' CSVs of the session file ``session``."""
-    from labrig.store_reader import SessionReader
+    from labrig.store.reader import SessionReader
 
     src, out_dir = Path(session), Path(out_dir)
     with SessionReader(src) as r:  # BadInput naming the file if it is missing or not a session

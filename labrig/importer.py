@@ -281,7 +281,7 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
         raise BadInput(f"{out}: already exists (use --force to overwrite)")
     steps = _plan(m.record, tables)
     starts, own = placement(m.record, tables)
-    from labrig.store_writer import SessionWriter  # heavy (h5py): only once the input is known good
+    from labrig.store.writer import SessionWriter  # heavy (h5py): only once the input is known good
 
     uid = new_uid()
     tmp = out.with_name(out.name + ".part")  # a failed import leaves no half file under the real name

@@ -34,7 +34,7 @@ from drivers.transcript import Exchange, ReplayMessages, ReplaySerial, Transcrip
 from labrig.errors import BadInput
 from labrig.events import Block, Event, RunStart, StepStart
 from labrig.rig import Rig, parse_rig
-from labrig.store_reader import SessionReader
+from labrig.store.reader import SessionReader
 
 FORCE_SLACK_N = 1.0
 EXACT_STREAMS = ("daq", "eis")

@@ -13,8 +13,7 @@ import numpy as np
 import pytest
 
 from labrig.cli import main
-from labrig.cli.analysis_cmds import load_and_fit
-from labrig.cli.diagnose_cmd import run_diagnosis
+from labrig.analysis import load_and_fit, run_diagnosis
 from labrig.fit.session_data import load_session
 
 EFFECT, SEED = "dehydration", 1  # a drift with time: seen only if the records keep their places in time

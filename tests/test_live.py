@@ -20,7 +20,7 @@ from labrig.events import Block, RunStart, StepPlan, daq_stream
 from labrig.live import app as live_app
 from labrig.live.model import LiveModel, Ring, minmax_decimate
 from labrig.session_run import RunRequest, execute
-from labrig.store_reader import SessionReader
+from labrig.store.reader import SessionReader
 
 DATA = Path(__file__).parent / "data" / "sessions"
 

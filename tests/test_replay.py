@@ -14,7 +14,7 @@ import pytest
 
 from labrig.cli import main
 from labrig.replay import check
-from labrig.store_reader import SessionReader
+from labrig.store.reader import SessionReader
 
 DATA = Path(__file__).parent / "data" / "sessions"
 NAMES = ("step", "eis", "stepped-sine")

@@ -20,7 +20,7 @@ def replay_cmd(file: str, live: bool, speed: float, screenshot: str | None, do_c
 
     --check exits 0 on PASS, 1 at the first divergence (the step and the command or stream), 2 on bad input.
     """
-    from labrig.store_reader import SessionReader
+    from labrig.store.reader import SessionReader
 
     if not Path(file).exists():
         raise BadInput(f"{file}: no such file")

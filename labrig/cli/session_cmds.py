@@ -18,7 +18,7 @@ def _time(wall: float) -> str | None:
 
 def summary(path: str) -> dict[str, Any]:
     """Everything ``inspect`` shows, as plain data."""
-    from labrig.store_reader import SessionReader
+    from labrig.store.reader import SessionReader
 
     with SessionReader(path) as r:
         steps = r.steps()

@@ -42,9 +42,8 @@ class CaseResult:
 def run_case(args: tuple[str, int, str, str]) -> CaseResult:
     """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
     name, seed, folder, protocol = args
-    from labrig.cli.analysis_cmds import load_and_fit
-    from labrig.cli.common import jsonable
-    from labrig.cli.diagnose_cmd import run_diagnosis
+    from labrig.analysis import load_and_fit, run_diagnosis
+    from labrig.jsonable import jsonable
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
 

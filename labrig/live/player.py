@@ -16,7 +16,7 @@ from typing import Callable, Iterator
 import numpy as np
 
 from labrig.events import Block, Column, Event, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec
-from labrig.store_reader import SessionReader
+from labrig.store.reader import SessionReader
 
 
 def _spec(name: str, data) -> StreamSpec:

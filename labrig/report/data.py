@@ -40,7 +40,7 @@ class ReportData:
 
 def _stored(path: Path, name: str) -> dict[str, Any] | None:
     """An analysis' ``result_json`` stored in the session, or None."""
-    from labrig.store_reader import SessionReader
+    from labrig.store.reader import SessionReader
 
     with SessionReader(path) as r:
         if name not in r.analyses():

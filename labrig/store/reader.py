@@ -19,8 +19,9 @@ from typing import Any
 import h5py
 import numpy as np
 
-from labrig import store as st
-from labrig import store_validate
+from labrig.store import layout as st
+from labrig.store import recovery
+from labrig.store import validate as store_validate
 from labrig.errors import BadInput
 
 
@@ -64,13 +65,13 @@ class SessionReader:
     """Read a session file (context manager). Raises ``BadInput`` naming the file if it is not one."""
 
     def __init__(self, path: str | Path):
-        self.path = st.check_path(path)
+        self.path = store_validate.check_path(path)
         self.swmr = False
         self.cleared_flags = False  # True: this open cleared the flags a killed writer left (h5clear -s)
         try:
             self._f = h5py.File(self.path, "r")
         except OSError as exc:
-            if not st._crashed_writer_flags(exc):
+            if not recovery.crashed_writer_flags(exc):
                 raise BadInput(f"{self.path}: cannot open ({exc})") from None
             self._f = self._open_crashed()
         store_validate.validate_open(self._f, self.path)  # a hostile file: one line (BadInput), closed
@@ -82,9 +83,9 @@ class SessionReader:
     def _open_crashed(self) -> h5py.File:
         """A file whose write flags are set: a killed writer's (no live lock) is cleared so that every HDF5
         tool opens it again; one being written now (or read-only here) is read in SWMR mode."""
-        if not st.writer_alive(self.path) and os.access(self.path, os.W_OK):
+        if not recovery.writer_alive(self.path) and os.access(self.path, os.W_OK):
             try:
-                st.clear_write_flags(self.path)
+                recovery.clear_write_flags(self.path)
                 f = h5py.File(self.path, "r")
                 self.cleared_flags = True
                 return f

@@ -23,7 +23,9 @@ from typing import Any
 import h5py
 import numpy as np
 
-from labrig import __version__, store as st
+from labrig import __version__
+from labrig.store import layout as st
+from labrig.store import recovery
 from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepPlan, StepStart, StreamSpec, Transcript
 
 MAX_CHUNK_ROWS = 65536  # 512 KiB of float64: fits HDF5's 1 MiB per-dataset chunk cache
@@ -267,9 +269,9 @@ class SessionWriter:
         self._f.flush()
         self._f.swmr_mode = True  # from here on: no new objects, no attribute changes
         if resuming:
-            self._lock_fd = st.writer_lock(self.path)
+            self._lock_fd = recovery.writer_lock(self.path)
             return
-        self._lock_fd = st.writer_lock(partial)
+        self._lock_fd = recovery.writer_lock(partial)
         # The session appears under its name only once its layout is complete: a kill before this
         # leaves no session (just the hidden partial file), never a half-made one. link() refuses to
         # replace an existing file, so a session is never overwritten.
@@ -329,7 +331,7 @@ class SessionWriter:
         still runs. Works on a file whose writer was killed (the stale write flags are cleared).
         """
         w = cls(path)
-        f = st.open_for_update(path)
+        f = recovery.open_for_update(path)
         try:
             w.previous_uid = st.text(f["entry"].attrs["last_run_uid"])
             resumes = f["entry/provenance"].get("resumes", {})

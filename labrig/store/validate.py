@@ -31,7 +31,7 @@ import h5py
 import numpy as np
 
 from labrig.errors import BadInput, one_line
-from labrig.store import FORMAT
+from labrig.store.layout import FORMAT
 
 MAX_OBJECTS = 200_000  # links in a file: a paper sweep has ~1500
 MAX_ELEMENTS = 50_000_000  # one dataset (400 MB of float64): above any record a run or an import writes
@@ -448,3 +448,19 @@ def _kind_words(kinds: str) -> str:
     words = {"f": "numbers", "i": "integers", "u": "integers", "O": "text", "S": "text"}
     return " or ".join(dict.fromkeys(words[k] for k in kinds))
 
+
+def check_path(path: str | Path) -> Path:
+    """The file exists and is HDF5, else ``BadInput`` naming it."""
+    p = Path(path)
+    if not p.exists():
+        raise BadInput(f"{p}: no such file")
+    check_file(p)  # no FIFO or device reaches HDF5
+    if p.is_dir():
+        raise BadInput(f"{p}: is a directory, not a session file")
+    try:
+        ok = h5py.is_hdf5(p)
+    except OSError as exc:
+        raise BadInput(f"{p}: cannot read ({exc})") from None
+    if not ok:
+        raise BadInput(f"{p}: not an HDF5 file")
+    return p
