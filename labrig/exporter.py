@@ -30,7 +30,8 @@ from pydantic import ValidationError
 
 from labrig import __version__
 from labrig.errors import BadInput
-from labrig.importer import EIS_REQUIRED, TIME_KINDS, Record, Specimen
+from labrig.importer import EIS_REQUIRED, TIME_KINDS, Record
+from labrig.specimen import Specimen
 
 DATA_KINDS = TIME_KINDS + ("eis",)
 RECORD_KEYS = ("frequency_Hz", "amplitude_V", "period_s", "temperature_C")  # optional manifest keys taken from the metadata

@@ -33,6 +33,7 @@ from pydantic import Field, ValidationError, model_validator
 from labrig import __version__
 from labrig.errors import BadInput, one_line
 from labrig.safe_read import read_text_file, text_stream
+from labrig.specimen import Specimen
 from labrig.validation import NonEmptyText, StrictModel, Text
 from labrig.events import Block, RunStart, RunStop, StepEnd, StepPlan, StepStart, daq_stream, eis_stream, force_stream, new_uid
 
@@ -46,14 +47,6 @@ MAX_CSV_BYTES = 512 << 20  # one record's CSV: 5 M rows of 5 columns of ~20 char
 MAX_ROWS = 5_000_000  # one record (the most a run's record may hold, protocols.steps.MAX_RECORD_SAMPLES)
 MAX_TOTAL_ROWS = 20_000_000  # the whole import: ~800 MB of float64 columns at most
 MAX_RECORDS = 10_000
-
-
-class Specimen(StrictModel):
-    length_m: float = Field(gt=0, lt=1)
-    width_m: float = Field(gt=0, lt=1)
-    thickness_m: float = Field(gt=0, lt=0.01)
-    clamp_area_m2: float = Field(gt=0, lt=0.01)
-    medium: Literal["water", "air"]
 
 
 class Record(StrictModel):

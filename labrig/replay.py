@@ -9,13 +9,12 @@ every ``daq`` and ``eis`` block the runner emits must equal the stored rows bit 
 stream depends on when it was polled, so ``force`` is compared loosely: each replayed value must lie
 within the step's recorded range widened by ``FORCE_SLACK_N``.
 
-Regenerate the recorded test sessions: ``python -m labrig.replay --regenerate tests/data/sessions``.
+Regenerate the recorded test sessions: ``python tests/regenerate_sessions.py tests/data/sessions``.
 """
 
 from __future__ import annotations
 
 import hashlib
-import json
 import math
 import threading
 from dataclasses import dataclass, field
@@ -391,42 +390,3 @@ def replay_live(path: str | Path, speed: float = 1.0, screenshot: str | Path | N
     stop = threading.Event()
     win = new_window(model, stop.set, f"labrig replay: {Path(path).name} ({'max' if speed == 0 else f'{speed:g}x'} speed)")
     return run_in_window(win, lambda: play(events, model, speed, stop), screenshot=screenshot)
-
-
-def regenerate(folder: str | Path, seed: int = 7) -> list[Path]:
-    """Record the test sessions (each ``*.toml`` in ``folder``) on the simulated bench and fit them."""
-    import gzip
-    import io
-    import tempfile
-    from contextlib import redirect_stdout
-
-    from labrig.cli import main as cli_main
-    from labrig.session_run import RunRequest, execute
-
-    out = []
-    for toml in sorted(Path(folder).glob("*.toml")):
-        with tempfile.TemporaryDirectory() as tmp:
-            h5 = Path(tmp) / f"{toml.stem}.h5"
-            res = execute(RunRequest(protocol=str(toml), path=h5, seed=seed))
-            if res.exit_code != 0:
-                raise RuntimeError(f"{toml}: run ended {res.exit_status}: {res.reason}")
-            buf = io.StringIO()
-            with redirect_stdout(buf):
-                if cli_main(["fit", str(h5), "--json"]) != 0:
-                    raise RuntimeError(f"{toml}: labrig fit failed")
-            fit = json.loads(buf.getvalue())
-            target = Path(folder) / f"{toml.stem}.h5.gz"
-            target.write_bytes(gzip.compress(h5.read_bytes(), 9, mtime=0))
-            (Path(folder) / f"{toml.stem}.fit.json").write_text(json.dumps(fit, indent=2, sort_keys=True) + "\n")
-            out.append(target)
-    return out
-
-
-if __name__ == "__main__":
-    import argparse
-
-    ap = argparse.ArgumentParser(prog="python -m labrig.replay")
-    ap.add_argument("--regenerate", metavar="FOLDER", required=True, help="record the test sessions of FOLDER's *.toml")
-    ap.add_argument("--seed", type=int, default=7)
-    for p in regenerate(ap.parse_args().regenerate, ap.parse_args().seed):
-        print(p, p.stat().st_size, "bytes")

@@ -26,16 +26,25 @@ geometry come from it.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import Field, ValidationError
 
 from labrig.errors import validation_error
-from labrig.importer import Specimen
 from labrig.safe_read import read_text_file
 from labrig.validation import LongText, NonEmptyText, StrictModel, Text
 
 MAX_SPECIMEN_FILE_BYTES = 1 << 20
+
+
+class Specimen(StrictModel):
+    """The strip's geometry and medium: an import manifest's ``[specimen]`` (DESIGN.md 6), in SI."""
+
+    length_m: float = Field(gt=0, lt=1)
+    width_m: float = Field(gt=0, lt=1)
+    thickness_m: float = Field(gt=0, lt=0.01)
+    clamp_area_m2: float = Field(gt=0, lt=0.01)
+    medium: Literal["water", "air"]
 
 
 class SpecimenCfg(Specimen):

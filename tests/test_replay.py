@@ -144,7 +144,7 @@ def test_replay_events_rebuild_the_stored_streams(tmp_path):
 
 
 def test_regenerate_is_documented():
-    assert "python -m labrig.replay --regenerate tests/data/sessions" in (DATA / "README.md").read_text()
+    assert "python tests/regenerate_sessions.py tests/data/sessions" in (DATA / "README.md").read_text()
     shutil.which("python")  # the command is run from the repository root
 
 

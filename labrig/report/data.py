@@ -118,7 +118,7 @@ def _check_stored(data: ReportData) -> None:
 def gather(path: str | Path, recompute: bool = False) -> ReportData:
     """Read and analyse a session for the report. ``BadInput`` if ``path`` is not a readable session."""
     from labrig.analysis import load_and_fit
-    from labrig.cli.session_cmds import summary
+    from labrig.store.summary import summary
 
     data = ReportData(Path(path), summary(str(path)))
     try:
