@@ -32,7 +32,7 @@ class CounterBench:
     def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
         idx = int(round(t0 * fs)) + np.arange(len(drive_V))
         v = (idx % WRAP) * STEP_V - 5.0
-        return {"voltage_V": v, "current_A": v * GAIN_A_PER_V, "displacement_m": v * M_PER_V}
+        return {"v_V": v, "i_A": v * GAIN_A_PER_V, "disp_m": v * M_PER_V}
 
 
 def serve(conn: "mp.connection.Connection") -> None:
@@ -48,7 +48,7 @@ def serve(conn: "mp.connection.Connection") -> None:
 
 def steps(block: dict[str, np.ndarray]) -> np.ndarray:
     """The staircase index on each channel, (3, n)."""
-    volts = np.stack([block["voltage_V"], block["current_A"] / GAIN_A_PER_V, block["displacement_m"] / M_PER_V])
+    volts = np.stack([block["v_V"], block["i_A"] / GAIN_A_PER_V, block["disp_m"] / M_PER_V])
     return np.rint((volts + 5.0) / STEP_V).astype(np.int64) % WRAP
 
 

@@ -261,7 +261,7 @@ def over_current_latency(time_scale: float, limit_A: float = 0.005) -> float:
 
         def watch_record(t0: float, fs: float, drive: np.ndarray) -> dict[str, np.ndarray]:
             out = run_record(t0, fs, drive)
-            over = np.flatnonzero(np.abs(out["current_A"]) > limit_A)
+            over = np.flatnonzero(np.abs(out["i_A"]) > limit_A)
             if over.size and "exceed" not in seen:
                 seen["exceed"] = t0 + over[0] / fs
             return out

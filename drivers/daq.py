@@ -45,7 +45,7 @@ from drivers.errors import (BufferOverflow, Disconnected, InstrumentError, Instr
 from drivers.instrument import Instrument
 from drivers.transcript import CallReplayer, Transcript
 
-KEYS = ("t_s", "voltage_V", "current_A", "displacement_m")
+KEYS = ("t_s", "v_V", "i_A", "disp_m")
 OVERFLOW_CODES = {-200279, -200010}  # samples no longer available, input FIFO overflow
 TIMEOUT_CODES = {-200284, -200560, -200474}  # samples not yet acquired, wait-until-done, operation timed out
 GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not present / not reachable
@@ -228,8 +228,8 @@ class DaqRig(Instrument):
     def _scale(self, raw: np.ndarray, first: int) -> dict[str, np.ndarray]:
         n = raw.shape[1]
         with np.errstate(invalid="ignore", over="ignore"):  # a bad gain gives NaN/inf: the caller's limits say so
-            return {"t_s": (first + np.arange(n)) / self._fs, "voltage_V": raw[0].copy(),
-                    "current_A": raw[1] * self.current_gain_A_per_V, "displacement_m": raw[2] * self.displacement_m_per_V}
+            return {"t_s": (first + np.arange(n)) / self._fs, "v_V": raw[0].copy(),
+                    "i_A": raw[1] * self.current_gain_A_per_V, "disp_m": raw[2] * self.displacement_m_per_V}
 
     def _check_drive(self, drive_V: Any) -> np.ndarray:
         drive = np.ascontiguousarray(drive_V, dtype=float).ravel()

@@ -19,6 +19,7 @@ from typing import Any, Iterable
 
 import numpy as np
 
+from drivers.daq import KEYS as DAQ_COLUMNS
 from drivers.errors import InstrumentError, InstrumentErrorReply, Overload
 from drivers.impedance_analyzer import estimate_sweep_s
 from drivers.transcript import Transcript as DriverTranscript
@@ -332,7 +333,7 @@ class Runner:
         try:
             with closing(rig.daq.stream_finite(a.drive_V, a.fs_Hz)) as stream:
                 for out in stream:
-                    block = {"t_s": out["t_s"], "v_V": out["voltage_V"], "i_A": out["current_A"], "disp_m": out["displacement_m"]}
+                    block = {k: out[k] for k in DAQ_COLUMNS}  # the driver's names are the stored ones
                     try:
                         check_daq_block(block, rig.limits)
                         logger.raise_if_tripped()

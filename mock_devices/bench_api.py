@@ -37,7 +37,7 @@ class BenchView(Protocol):
     def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
         """Apply ``drive_V`` (hardware-timed at ``fs`` from simulated time ``t0``) and return what the AI sees.
 
-        Keys: ``"voltage_V"`` (drive at the strip), ``"current_A"``, ``"displacement_m"`` (at the laser spot),
+        Keys: ``"v_V"`` (drive at the strip), ``"i_A"``, ``"disp_m"`` (at the laser spot),
         each the length of ``drive_V``. Successive calls with contiguous times continue the same state.
         """
 

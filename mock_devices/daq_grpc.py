@@ -362,4 +362,4 @@ class StandInBench:
         a = np.exp(-1.0 / (fs * self.tau_s))
         y, _ = lfilter([1.0 - a], [1.0, -a], self.k_m_per_V * v, zi=[a * self._y])
         self._y = float(y[-1]) if len(y) else self._y
-        return {"voltage_V": v.copy(), "current_A": v / self.R_ohm, "displacement_m": y}
+        return {"v_V": v.copy(), "i_A": v / self.R_ohm, "disp_m": y}

@@ -455,9 +455,9 @@ class SimDevice:
             rec = self.bench.run_record(t.t0 + start / rate, rate, drive)
             t.debt_s += (time.perf_counter() - w0) * self.bench.clock.time_scale
             skip = len(kept)
-            sig = {"ai0": np.asarray(rec["voltage_V"])[skip:],
-                   "ai1": np.asarray(rec["current_A"])[skip:] / self.gain_A_per_V,
-                   "ai2": np.asarray(rec["displacement_m"])[skip:] / self.m_per_V}
+            sig = {"ai0": np.asarray(rec["v_V"])[skip:],
+                   "ai1": np.asarray(rec["i_A"])[skip:] / self.gain_A_per_V,
+                   "ai2": np.asarray(rec["disp_m"])[skip:] / self.m_per_V}
             block = np.empty((len(t.chans), k))
             for i, c in enumerate(t.chans):
                 block[i] = sig.get(c.phys, 0.0)

@@ -38,7 +38,7 @@ class WindowEffect(Effect):
         # add only this effect's change, so changes other (non-window) effects made to `out` survive
         dd, dc = w.record(d1 - w.displacement), w.record(c1 - w.current)
         w.displacement, w.current = d1, c1
-        return {**out, "displacement_m": out["displacement_m"] + dd, "current_A": out["current_A"] + dc}
+        return {**out, "disp_m": out["disp_m"] + dd, "i_A": out["i_A"] + dc}
 
 
 # ---------------------------------------------------------------------------------------- strip physics

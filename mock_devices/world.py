@@ -204,14 +204,14 @@ class Bench:
             self._history.append(_Segment(t0, fs, v.copy()))
             self._trace = _Trace(t0, fs, disp[k0:].copy())
             self.window = RecordWindow(t0, fs, k0, n, u, disp, cur, sp)
-            out = {"current_A": cur[k0 : k0 + n], "displacement_m": disp[k0 : k0 + n]}
+            out = {"i_A": cur[k0 : k0 + n], "disp_m": disp[k0 : k0 + n]}
             for e in self.effects:
                 out = e.outputs(out, t, v, self)
             nz = self.noise
             return {
-                "voltage_V": v + nz.voltage_V * self.rng.standard_normal(n),
-                "current_A": out["current_A"] + nz.current_A * self.rng.standard_normal(n),
-                "displacement_m": out["displacement_m"] + nz.displacement_m * self.rng.standard_normal(n),
+                "v_V": v + nz.voltage_V * self.rng.standard_normal(n),
+                "i_A": out["i_A"] + nz.current_A * self.rng.standard_normal(n),
+                "disp_m": out["disp_m"] + nz.displacement_m * self.rng.standard_normal(n),
             }
 
     def _forget_before(self, t: float) -> None:

@@ -28,8 +28,8 @@ def test_daq_step_moves_the_serial_laser_as_the_physics_predicts():
     lo, hi = window.min() - 5e-6, window.max() + 5e-6  # laser noise and 0.1 um resolution
     assert lo <= laser <= hi, (laser, lo, hi)
     # the DAQ's analog laser channel saw the same strip during the record
-    assert np.allclose(out["displacement_m"], y[: drive.size], atol=3e-5)
-    assert out["displacement_m"][int(8.9 * fs)] > 3e-3  # the step really bent it
+    assert np.allclose(out["disp_m"], y[: drive.size], atol=3e-5)
+    assert out["disp_m"][int(8.9 * fs)] > 3e-3  # the step really bent it
     assert t0 <= record_start <= before
 
 
@@ -44,5 +44,5 @@ def test_impedance_analyser_and_daq_current_agree():
     t = out["t_s"]
     tail = t > 5.0
     ph = np.exp(-2j * np.pi * f0 * t[tail])
-    z_daq = np.mean(out["voltage_V"][tail] * ph) / np.mean(out["current_A"][tail] * ph)
+    z_daq = np.mean(out["v_V"][tail] * ph) / np.mean(out["i_A"][tail] * ph)
     assert abs(z_daq / z[0] - 1) < 0.03

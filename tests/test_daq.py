@@ -45,14 +45,14 @@ def test_finite_record_matches_bench(rig: DaqRig, bench: StandInBench) -> None:
     fs, n = 1000.0, 3000
     drive = _sine(n, fs)
     out = rig.run_finite(drive, fs, timeout_s=5.0)
-    assert set(out) == {"t_s", "voltage_V", "current_A", "displacement_m"}
+    assert set(out) == {"t_s", "v_V", "i_A", "disp_m"}
     np.testing.assert_allclose(out["t_s"], np.arange(n) / fs)
     # sample k of every input belongs to drive sample k (AO started by AI's start trigger)
-    np.testing.assert_allclose(out["voltage_V"], drive, atol=1e-3)
-    np.testing.assert_allclose(out["current_A"], drive / 100.0, atol=1e-3 * GAIN_A_PER_V)
+    np.testing.assert_allclose(out["v_V"], drive, atol=1e-3)
+    np.testing.assert_allclose(out["i_A"], drive / 100.0, atol=1e-3 * GAIN_A_PER_V)
     a = np.exp(-1.0 / (fs * 0.05))
     disp = lfilter([1 - a], [1, -a], 1e-3 * drive)
-    np.testing.assert_allclose(out["displacement_m"], disp, atol=1e-3 * M_PER_V)
+    np.testing.assert_allclose(out["disp_m"], disp, atol=1e-3 * M_PER_V)
     assert sum(r[2] for r in bench.records) == n  # the bench saw exactly the record, contiguous
     starts = [r[0] for r in bench.records]
     assert np.allclose(np.diff(starts), [r[2] / fs for r in bench.records[:-1]])
@@ -65,8 +65,8 @@ def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
     off_cal = {"current_gain_A_per_V": 2 * GAIN_A_PER_V, "displacement_m_per_V": 3 * M_PER_V}
     with DaqRig(grpc_target=sim.address, **off_cal) as off:
         got = off.run_finite(drive, fs)
-    np.testing.assert_allclose(got["current_A"], 2 * ref["current_A"], atol=5e-3 * GAIN_A_PER_V)
-    np.testing.assert_allclose(got["displacement_m"], 3 * ref["displacement_m"], atol=5e-3 * M_PER_V)
+    np.testing.assert_allclose(got["i_A"], 2 * ref["i_A"], atol=5e-3 * GAIN_A_PER_V)
+    np.testing.assert_allclose(got["disp_m"], 3 * ref["disp_m"], atol=5e-3 * M_PER_V)
 
 
 def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
@@ -77,7 +77,7 @@ def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
     assert sim.ao_output_V() != 0.0 or np.allclose(block, 0)
     rig.stop()
     t = np.concatenate([b["t_s"] for b in blocks])
-    v = np.concatenate([b["voltage_V"] for b in blocks])
+    v = np.concatenate([b["v_V"] for b in blocks])
     np.testing.assert_allclose(t, np.arange(1200) / fs)
     np.testing.assert_allclose(v, np.tile(block, 1200 // period), atol=1e-3)  # AO regenerates, no gap
     assert sim.ao_output_V() == 0.0
@@ -88,7 +88,7 @@ def test_continuous_without_drive_reads_zero_volts(rig: DaqRig) -> None:
     a, b = rig.read_block(100), rig.read_block(100)
     rig.stop()
     assert b["t_s"][0] == pytest.approx(a["t_s"][-1] + 0.01)
-    assert np.max(np.abs(np.concatenate([a["voltage_V"], b["voltage_V"]]))) < 1e-3
+    assert np.max(np.abs(np.concatenate([a["v_V"], b["v_V"]]))) < 1e-3
 
 
 def test_ao_returns_to_zero_after_close(sim: SimDaq) -> None:
@@ -218,7 +218,7 @@ def test_replay_of_a_continuous_run(sim: SimDaq) -> None:
         with pytest.raises(ReplayMismatch, match="read_block"):
             rig.read_block(60)
     for a, b in zip(live, again):
-        np.testing.assert_array_equal(a["voltage_V"], b["voltage_V"])
+        np.testing.assert_array_equal(a["v_V"], b["v_V"])
         np.testing.assert_array_equal(a["t_s"], b["t_s"])
 
 
@@ -265,8 +265,8 @@ def test_with_the_simulated_world() -> None:
         fs = 1000.0
         drive = 0.5 * np.sin(2 * np.pi * np.arange(5000) / fs)
         out = rig.run_finite(drive, fs)
-        np.testing.assert_allclose(out["voltage_V"], drive, atol=5e-3)
-        assert np.all(np.isfinite(out["displacement_m"])) and np.ptp(out["displacement_m"]) > 0
+        np.testing.assert_allclose(out["v_V"], drive, atol=5e-3)
+        assert np.all(np.isfinite(out["disp_m"])) and np.ptp(out["disp_m"]) > 0
         rig.start_continuous(fs, drive_block=drive[:1000], buffer_s=30.0)
         blocks = [rig.read_block(1000) for _ in range(3)]
         rig.stop()

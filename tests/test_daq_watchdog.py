@@ -90,7 +90,7 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
         # a new host takes over the dead one's watchdog and can drive again
         with DaqRig(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE) as rig:
             out = rig.run_finite(np.full(100, 0.5), 1000.0)
-            assert np.allclose(out["voltage_V"], 0.5, atol=1e-3)
+            assert np.allclose(out["v_V"], 0.5, atol=1e-3)
         assert sim.ao_output_V() == 0.0
         assert not any(t.wd for t in sim.device.tasks.values())  # closed cleanly: disarmed
 
@@ -120,7 +120,7 @@ def test_a_host_that_keeps_resetting_is_never_cut_off() -> None:
         rig.start_continuous(1000.0, drive_block=np.full(1000, 0.8), buffer_s=1000.0)
         n_blocks = int(np.ceil(1.5 * TIMEOUT_RIG_S / 10.0))  # 10 rig s blocks over 1.5 timeouts, read as they come
         blocks = [rig.read_block(10_000, timeout_s=10.0) for _ in range(n_blocks)]
-        assert all(np.allclose(b["voltage_V"], 0.8, atol=1e-3) for b in blocks)
+        assert all(np.allclose(b["v_V"], 0.8, atol=1e-3) for b in blocks)
         assert sim.ao_output_V() == 0.8 and not rig.watchdog.expired()
         rig.stop()
         assert rig.watchdog.failed_resets == 0
@@ -144,7 +144,7 @@ def test_a_bad_watchdog_timeout_in_the_rig_file_is_refused(value: object) -> Non
     from labrig.rig import parse_rig
 
     data = {"instruments": {"keyence": {"address": "socket://127.0.0.1:1"}, "loadcell": {"address": "x"},
-                            "impedance": {"address": "y"},
+                            "impedance": {"address": "TCPIP::127.0.0.1::1::SOCKET"},
                             "daq": {"address": "z", "watchdog_s": float(value) if value == "nan" else value}}}
     with pytest.raises(BadInput, match="instruments.daq.watchdog_s"):
         parse_rig(data, "rig.toml")

@@ -106,8 +106,8 @@ def test_combinations_hold_each_part_as_drawn_alone_in_physical_order():
 @pytest.mark.parametrize("seed", SEEDS)
 def test_back_relaxation_step_peaks_then_decays(seed):
     fs, on = 50.0, slice(int(1.0 * 50), int(31.0 * 50))
-    d = step_run("back_relaxation", seed)["displacement_m"][on]
-    lin = step_run("none")["displacement_m"][on]
+    d = step_run("back_relaxation", seed)["disp_m"][on]
+    lin = step_run("none")["disp_m"][on]
     assert np.argmax(lin) > 0.97 * lin.size  # the linear strip keeps rising for 30 s (CPE)
     k = int(np.argmax(d))
     assert k < 0.8 * d.size and d[-1] < 0.85 * d[k]  # peaks, then gives back >= 15 %
@@ -116,17 +116,17 @@ def test_back_relaxation_step_peaks_then_decays(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_faradaic_current_odd_harmonics_and_steady_dc(seed):
     fs, f = 100.0, 0.5
-    on = sine_run("faradaic_current", seed, 1.5, f, fs)["current_A"]
-    off = sine_run("none", seed, 1.5, f, fs)["current_A"]
+    on = sine_run("faradaic_current", seed, 1.5, f, fs)["i_A"]
+    off = sine_run("none", seed, 1.5, f, fs)["i_A"]
     assert harmonic_ratio(on, fs, f, 3) > 10 * harmonic_ratio(off, fs, f, 3)
     assert harmonic_ratio(on, fs, f, 3) > 3e-3
     # during a step the extra current is a steady DC (it does not decay like charging current)
-    extra = step_run("faradaic_current", seed)["current_A"] - step_run("none")["current_A"]
+    extra = step_run("faradaic_current", seed)["i_A"] - step_run("none")["i_A"]
     early, late = np.mean(extra[int(10 * fs / 2) : int(12 * fs / 2)]), np.mean(extra[int(28 * fs / 2) : int(30 * fs / 2)])
     assert late > 5e-5 and abs(late / early - 1) < 0.05
     # it grows faster than V: the 1.5 V fundamental is not 1.5 x the 1 V one
-    on1 = sine_run("faradaic_current", seed, 1.0, f, fs)["current_A"]
-    off1 = sine_run("none", seed, 1.0, f, fs)["current_A"]
+    on1 = sine_run("faradaic_current", seed, 1.0, f, fs)["i_A"]
+    off1 = sine_run("none", seed, 1.0, f, fs)["i_A"]
     g15, g10 = abs(harmonics(on, fs, f)[0] - harmonics(off, fs, f)[0]), abs(harmonics(on1, fs, f)[0] - harmonics(off1, fs, f)[0])
     assert g15 > 1.6 * g10
 
@@ -134,7 +134,7 @@ def test_faradaic_current_odd_harmonics_and_steady_dc(seed):
 def loop_area(r, fs: float, f: float) -> float:
     """Area of the V-delta loop over one cycle, per unit of the box ptp(V) x ptp(delta)."""
     n = int(round(fs / f))
-    v, d = r["voltage_V"][-n:], r["displacement_m"][-n:]
+    v, d = r["v_V"][-n:], r["disp_m"][-n:]
     d = d - np.polyval(np.polyfit(np.arange(n), d, 1), np.arange(n)) + np.mean(d)  # drift is not loop
     return abs(np.sum(0.5 * (d + np.roll(d, 1)) * (v - np.roll(v, 1)))) / (np.ptp(v) * np.ptp(d))
 
@@ -150,14 +150,14 @@ def test_hysteresis_loop_stays_as_frequency_falls(seed):
     assert extra[1] > 0.7 * extra[0]  # ... and does not shrink as f -> 0 (rate independent)
     # and the current does not see it
     on, off = (sine_run(s, seed, 1.0, 0.2, fs, cycles=3, keep=1) for s in ("hysteresis", "none"))
-    assert np.allclose(on["current_A"], off["current_A"])
+    assert np.allclose(on["i_A"], off["i_A"])
 
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_time_delay_phase_linear_in_f_gain_unchanged(seed):
     fs, freqs, amps = 1000.0, np.array([1.0, 5.0, 10.0, 20.0]), (0.1, 0.3, 1.0, 1.0)  # ~ equal displacement
     v = sum(a * np.sin(2 * np.pi * f * np.arange(int(10 * fs)) / fs) for a, f in zip(amps, freqs))
-    on, off = (bench(s, seed).run_record(0.0, fs, v)["displacement_m"][int(2 * fs) :] for s in ("time_delay", "none"))
+    on, off = (bench(s, seed).run_record(0.0, fs, v)["disp_m"][int(2 * fs) :] for s in ("time_delay", "none"))
     ratio = np.array([tone(on, fs, f) / tone(off, fs, f) for f in freqs])
     assert np.allclose(np.abs(ratio), 1.0, atol=0.02)
     phase = np.unwrap(np.angle(ratio))
@@ -175,7 +175,7 @@ def test_sensor_offset_scales_gain_resonance_stays(seed):
     t = np.arange(int(24 * fs)) / fs
     v = sum(0.1 * np.sin(2 * np.pi * f * t + k) for k, f in enumerate(freqs))
     on, off = (bench(s, seed).run_record(0.0, fs, v) for s in ("sensor_offset", "none"))
-    h_on, h_off = (np.array([abs(tone(r["displacement_m"][int(4 * fs) :], fs, f)) for f in freqs]) for r in (on, off))
+    h_on, h_off = (np.array([abs(tone(r["disp_m"][int(4 * fs) :], fs, f)) for f in freqs]) for r in (on, off))
     assert 0.3 < h_on[0] / h_off[0] < 0.85  # (x_m/L)^2-like quasi-static scaling
     assert np.argmax(h_on[1:]) == np.argmax(h_off[1:])  # the resonance does not move
     assert bench("sensor_offset", seed).specimen().x_sensor < bench().specimen().x_sensor
@@ -203,11 +203,11 @@ def test_clamp_relaxation_force_falls_and_the_clamp_step_still_passes(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_dehydration_same_step_later_is_smaller(seed):
     b = bench("dehydration", seed)
-    first = np.max(step_run("", b=b)["displacement_m"])
-    later = np.max(step_run("", b=b, t0=2000.0)["displacement_m"])
+    first = np.max(step_run("", b=b)["disp_m"])
+    later = np.max(step_run("", b=b, t0=2000.0)["disp_m"])
     ref = bench()
     assert later < 0.75 * first
-    assert np.max(step_run("", b=ref, t0=2000.0)["displacement_m"]) == pytest.approx(np.max(step_run("", b=bench())["displacement_m"]), rel=0.01)
+    assert np.max(step_run("", b=ref, t0=2000.0)["disp_m"]) == pytest.approx(np.max(step_run("", b=bench())["disp_m"]), rel=0.01)
     z = lambda bb, t: abs(bb.impedance(np.array([0.1]), 0.01, 0.0)[0])  # noqa: E731
     b.clock.t = 2000.0
     assert z(b, 2000.0) > 1.1 * z(bench("dehydration", seed), 0.0)
@@ -215,12 +215,12 @@ def test_dehydration_same_step_later_is_smaller(seed):
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_large_deflection_gain_falls_with_amplitude_and_odd_harmonics(seed):
-    p1, p2 = (np.max(step_run("large_deflection", seed, a)["displacement_m"]) for a in (1.0, 2.0))
-    l1, l2 = (np.max(step_run("none", seed, a)["displacement_m"]) for a in (1.0, 2.0))
+    p1, p2 = (np.max(step_run("large_deflection", seed, a)["disp_m"]) for a in (1.0, 2.0))
+    l1, l2 = (np.max(step_run("none", seed, a)["disp_m"]) for a in (1.0, 2.0))
     assert l2 == pytest.approx(2 * l1, rel=2e-3)
     assert p2 < 0.96 * 2 * p1
     fs, f = 50.0, 0.1
-    on, off = (sine_run(s, seed, 2.0, f, fs, cycles=4, keep=2)["displacement_m"] for s in ("large_deflection", "none"))
+    on, off = (sine_run(s, seed, 2.0, f, fs, cycles=4, keep=2)["disp_m"] for s in ("large_deflection", "none"))
     assert harmonic_ratio(on, fs, f, 3) > 5 * harmonic_ratio(off, fs, f, 3)
 
 
@@ -228,12 +228,12 @@ def test_large_deflection_gain_falls_with_amplitude_and_odd_harmonics(seed):
 def test_strain_resistance_even_harmonics_and_amplitude_dependent_phase(seed):
     fs, f = 50.0, 0.2
     on, off = (sine_run(s, seed, 1.5, f, fs) for s in ("strain_resistance", "none"))
-    for ch in ("current_A", "displacement_m"):
+    for ch in ("i_A", "disp_m"):
         assert harmonic_ratio(on[ch], fs, f, 2) > 5 * harmonic_ratio(off[ch], fs, f, 2)
     on_lo, off_lo = (sine_run(s, seed, 0.25, f, fs) for s in ("strain_resistance", "none"))
 
     def phase_shift(a, b):  # phase of the current's fundamental, with vs without
-        return np.angle(harmonics(a["current_A"], fs, f)[0] / harmonics(b["current_A"], fs, f)[0])
+        return np.angle(harmonics(a["i_A"], fs, f)[0] / harmonics(b["i_A"], fs, f)[0])
 
     assert abs(phase_shift(on, off)) > 3 * abs(phase_shift(on_lo, off_lo)) + 1e-4
 
@@ -243,7 +243,7 @@ def test_mains_pickup_narrow_line(seed):
     fs = 500.0
     e = scenarios.effects_for("mains_pickup", seed)[0]
     on, off = (bench(s, seed).run_record(100.0, fs, np.zeros(int(20 * fs))) for s in ("mains_pickup", "none"))
-    for ch, noise in (("displacement_m", 0.5e-6), ("current_A", 2e-6)):
+    for ch, noise in (("disp_m", 0.5e-6), ("i_A", 2e-6)):
         spec_on = np.abs(np.fft.rfft(on[ch] * np.hanning(on[ch].size)))
         spec_off = np.abs(np.fft.rfft(off[ch] * np.hanning(off[ch].size)))
         freqs = np.fft.rfftfreq(on[ch].size, 1 / fs)
@@ -258,10 +258,10 @@ def test_mains_pickup_narrow_line(seed):
 def test_back_relaxation_plus_mains_shows_both():
     fs = 500.0
     both, alone = step_run("back_relaxation+mains_pickup", 5, fs=fs), step_run("back_relaxation", 5, fs=fs)
-    d = both["displacement_m"][int(fs) : int(31 * fs)]
+    d = both["disp_m"][int(fs) : int(31 * fs)]
     assert np.argmax(d) < 0.8 * d.size  # back relaxation: peaks within the on phase
     f_line = scenarios.effects_for("mains_pickup", 5)[0].f_line
-    x = [r["displacement_m"] for r in (both, alone)]
+    x = [r["disp_m"] for r in (both, alone)]
     freqs = np.fft.rfftfreq(x[0].size, 1 / fs)
     line = np.abs(freqs - f_line) < 0.2
     spec = [np.abs(np.fft.rfft(xi * np.hanning(xi.size)))[line].max() for xi in x]

@@ -19,10 +19,10 @@ def test_records_carry_the_strips_memory():
     r1, r2 = b.run_record(0.0, fs, on), b.run_record(10.0, fs, off)
     sp = presets.get("paper").specimen(3062)
     full = timeresp.simulate(lambda s: transfer.displacement_tf(s, sp), np.concatenate([on, off]), fs)
-    got = np.concatenate([r1["displacement_m"], r2["displacement_m"]])
+    got = np.concatenate([r1["disp_m"], r2["disp_m"]])
     assert np.max(np.abs(got - full)) < 1e-5 * np.max(np.abs(full))
     # after the drive returns to 0 V the strip relaxes back, not instantly
-    assert 0 < r2["displacement_m"][-1] < r2["displacement_m"][0]
+    assert 0 < r2["disp_m"][-1] < r2["disp_m"][0]
 
 
 def test_current_and_voltage_follow_the_impedance():
@@ -32,10 +32,10 @@ def test_current_and_voltage_follow_the_impedance():
     r = b.run_record(0.0, fs, v)
     t = np.arange(v.size) / fs
     tail = t > 20
-    ratio = np.mean(r["current_A"][tail] * np.exp(-2j * np.pi * f0 * t[tail])) / np.mean(v[tail] * np.exp(-2j * np.pi * f0 * t[tail]))
+    ratio = np.mean(r["i_A"][tail] * np.exp(-2j * np.pi * f0 * t[tail])) / np.mean(v[tail] * np.exp(-2j * np.pi * f0 * t[tail]))
     expected = 1 / imp.impedance(np.array([2j * np.pi * f0]), presets.get("paper").specimen(612))[0]
     assert abs(ratio / expected - 1) < 0.01
-    assert np.allclose(r["voltage_V"], v)
+    assert np.allclose(r["v_V"], v)
 
 
 def test_clamp_moves_towards_its_target_and_changes_the_strip():
@@ -54,11 +54,11 @@ def test_effects_hook_in_without_touching_the_physics():
         name = "test_offset"
 
         def outputs(self, out, t, v, bench):
-            return {**out, "displacement_m": out["displacement_m"] + 1e-3}
+            return {**out, "disp_m": out["disp_m"] + 1e-3}
 
     b = Bench(ScaledClock(1000.0), noise=QUIET, effects=[Offset()])
     r = b.run_record(0.0, 100.0, np.zeros(100))
-    assert np.allclose(r["displacement_m"], 1e-3)
+    assert np.allclose(r["disp_m"], 1e-3)
 
 
 def test_impedance_noise_is_small_and_seeded():

@@ -42,8 +42,8 @@ def _daq(cfg: RigFile) -> tuple[str, str]:
         out = daq.run_finite(np.zeros(20), 1000.0, timeout_s=10.0)  # 20 ms at 0 V: reads every AI channel
     where = "this computer" if d.address == "local" else f"gRPC {d.address}"
     return (f"NI-DAQmx {d.device} on {where}",
-            f"AI at 0 V drive: {np.mean(out['voltage_V']):+.4f} V, {np.mean(out['current_A']) * 1e3:+.4f} mA, "
-            f"{np.mean(out['displacement_m']) * 1e3:+.4f} mm")
+            f"AI at 0 V drive: {np.mean(out['v_V']):+.4f} V, {np.mean(out['i_A']) * 1e3:+.4f} mA, "
+            f"{np.mean(out['disp_m']) * 1e3:+.4f} mm")
 
 
 def _impedance(cfg: RigFile) -> tuple[str, str]:
