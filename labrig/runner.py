@@ -11,6 +11,7 @@ KeyboardInterrupt at once and is handled the same way. See docs/safety.md.
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from contextlib import closing
@@ -58,20 +59,18 @@ def validate(steps: Iterable[Step], rig: Rig, source: str) -> None:
     lim = rig.limits
     for s in steps:
         a = s.action
-        if isinstance(a, Record):
-            peak = peak_drive(s)
-            if peak > lim.max_drive_V:
-                raise BadInput(f"{source}: step {s.name}: drive {peak:.3g} V exceeds the rig's safety.max_drive_V = {lim.max_drive_V:g} V")
-            if not np.all(np.isfinite(a.drive_V)) or a.fs_Hz <= 0:
-                raise BadInput(f"{source}: step {s.name}: drive is not finite or fs_Hz <= 0")
-        elif isinstance(a, SetClamp) and a.force_N > lim.max_force_N:  # per strip: the force is pressure x its clamp area
+        peak = peak_drive(s)
+        if not math.isfinite(peak) or (isinstance(a, Record) and a.fs_Hz <= 0):
+            raise BadInput(f"{source}: step {s.name}: drive is not finite or fs_Hz <= 0")
+        if peak > lim.max_drive_V:
+            raise BadInput(f"{source}: step {s.name}: {'impedance ' if isinstance(a, Impedance) else ''}drive {peak:.3g} V exceeds "
+                           f"the rig's safety.max_drive_V = {lim.max_drive_V:g} V")
+        if isinstance(a, SetClamp) and a.force_N > lim.max_force_N:  # per strip: the force is pressure x its clamp area
             area, strip = rig.clamp_area_m2, rig.config.sample.preset
             raise BadInput(f"{source}: step {s.name}: clamp force {a.force_N:.3g} N on strip {strip!r} (clamp area {area * 1e6:.3g} mm^2) "
                            f"exceeds the rig's safety.max_force_N = {lim.max_force_N:g} N: this strip allows at most "
                            f"{lim.max_force_N / area / 1e3:.0f} kPa")
-        elif isinstance(a, Impedance) and abs(a.ac_V) + abs(a.bias_V) > lim.max_drive_V:
-            raise BadInput(f"{source}: step {s.name}: impedance drive exceeds safety.max_drive_V = {lim.max_drive_V:g} V")
-        elif isinstance(a, Impedance) and (problem := out_of_range(rig.config.instruments.impedance.model, a.freqs_Hz)):
+        if isinstance(a, Impedance) and (problem := out_of_range(rig.config.instruments.impedance.model, a.freqs_Hz)):
             raise BadInput(f"{source}: step {s.name}: {problem}")
 
 
@@ -271,24 +270,21 @@ class Runner:
         return summary
 
     def _act(self, index: int, a: Any, logger: "_ForceLogger") -> dict[str, Any]:
-        if isinstance(a, SetClamp):
-            return self._clamp(a)
-        if isinstance(a, Settle):
-            return self._settle(a.duration_s, logger)
-        if isinstance(a, Impedance):
-            return self._impedance(index, a)
-        if isinstance(a, Record):
-            return self._record(index, a, logger)
-        raise TypeError(f"unknown action {a!r}")
+        """Run one action through the command table (one handler per action type)."""
+        try:
+            handler = _HANDLERS[type(a)]
+        except KeyError:
+            raise TypeError(f"unknown action {a!r}") from None
+        return handler(self, index, a, logger)
 
-    def _clamp(self, a: SetClamp) -> dict[str, Any]:
+    def _clamp(self, index: int, a: SetClamp, logger: "_ForceLogger") -> dict[str, Any]:
         rig = self.rig
         rig.clamp.request(a.force_N)
         reading = rig.loadcell.wait_stable(a.force_N, a.tol_N, a.hold_s, a.timeout_s, rig.clock)
         return {"force_N": reading.force_N, "target_N": a.force_N}
 
-    def _settle(self, duration_s: float, logger: "_ForceLogger") -> dict[str, Any]:
-        clock = self.rig.clock
+    def _settle(self, index: int, a: Settle, logger: "_ForceLogger") -> dict[str, Any]:
+        clock, duration_s = self.rig.clock, a.duration_s
         end = clock.now() + duration_s
         while clock.now() < end and not self.stop_requested.is_set():
             clock.sleep(min(1.0, end - clock.now()))
@@ -296,7 +292,7 @@ class Runner:
             self._hold_if_asked(in_step=True)  # a safe point: a pause or a failed suspender interrupts the settle
         return {"duration_s": duration_s}
 
-    def _impedance(self, index: int, a: Impedance) -> dict[str, Any]:
+    def _impedance(self, index: int, a: Impedance, logger: "_ForceLogger") -> dict[str, Any]:
         an = self.rig.analyzer
         # the sweep's wait in rig seconds: twice its generous estimate (plus a reply's), as wall seconds
         an.sweep_timeout_s = rig_timeout(self.rig.clock, REPLY_RIG_S + 2.0 * estimate_sweep_s(np.array(a.freqs_Hz)), REPLY_WALL_S)
@@ -379,6 +375,10 @@ class _BlockEmitter:
             kept["daq"] = kept.get("daq", 0) + len(cols["t_s"])
             self.r._inflight["kept_until_s"] = float(cols["t_s"][-1])
         self._since = time.monotonic()
+
+
+# the command table: what each action of a plan does on the rig (Bluesky's RunEngine dispatches the same way)
+_HANDLERS = {SetClamp: Runner._clamp, Settle: Runner._settle, Impedance: Runner._impedance, Record: Runner._record}
 
 
 class _ForceLogger:

@@ -27,10 +27,20 @@ class SetClamp:
     hold_s: float
     timeout_s: float
 
+    streams = ()  # the load cell only (class attributes, not fields)
+    peak_drive_V = 0.0
+
+    @property
+    def duration_s(self) -> float:
+        return min(self.timeout_s, 5 * self.hold_s + 10.0)  # planned: a few holds to settle on the target
+
 
 @dataclass(frozen=True)
 class Settle:
     duration_s: float
+
+    streams = ()
+    peak_drive_V = 0.0
 
 
 @dataclass(frozen=True)
@@ -38,6 +48,18 @@ class Impedance:
     freqs_Hz: tuple[float, ...]
     ac_V: float
     bias_V: float = 0.0
+
+    @property
+    def streams(self) -> tuple:
+        return (eis_stream(len(self.freqs_Hz)),)
+
+    @property
+    def peak_drive_V(self) -> float:
+        return abs(self.ac_V) + abs(self.bias_V)
+
+    @property
+    def duration_s(self) -> float:
+        return float(sum(max(5.0 / f, 0.1) for f in self.freqs_Hz))  # a few cycles a point, at least 0.1 s
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,6 +73,14 @@ class Record:
     def duration_s(self) -> float:
         return self.drive_V.size / self.fs_Hz
 
+    @property
+    def streams(self) -> tuple:
+        return (daq_stream(self.drive_V.size),)
+
+    @property
+    def peak_drive_V(self) -> float:
+        return float(np.max(np.abs(self.drive_V)))
+
 
 Action = Union[SetClamp, Settle, Impedance, Record]
 
@@ -63,31 +93,19 @@ class Step:
     metadata: dict[str, Any] = field(default_factory=dict)
 
     def streams(self, force_rate_Hz: float) -> tuple:
-        """The streams this step writes: the load cell always, plus what its action produces."""
-        out = [force_stream(0)]  # the load cell's rate is its own: length unknown in advance
-        if isinstance(self.action, Record):
-            out.append(daq_stream(self.action.drive_V.size))
-        elif isinstance(self.action, Impedance):
-            out.append(eis_stream(len(self.action.freqs_Hz)))
-        return tuple(out)
+        """The streams this step writes: the load cell always (its rate is its own: length unknown in advance),
+        plus what its action produces."""
+        return (force_stream(0), *self.action.streams)
 
 
 def step_duration(step: Step) -> float:
     """Planned duration in simulated/real seconds (for the ETA and the store's chunking)."""
-    a = step.action
-    if isinstance(a, Record):
-        return a.duration_s
-    if isinstance(a, Settle):
-        return a.duration_s
-    if isinstance(a, SetClamp):
-        return min(a.timeout_s, 5 * a.hold_s + 10.0)
-    if isinstance(a, Impedance):
-        return float(sum(max(5.0 / f, 0.1) for f in a.freqs_Hz))
-    return 0.0
+    return step.action.duration_s
 
 
 def peak_drive(step: Step) -> float:
-    return float(np.max(np.abs(step.action.drive_V))) if isinstance(step.action, Record) else 0.0
+    """The largest drive the step puts on the strip (V)."""
+    return step.action.peak_drive_V
 
 
 # ---------------------------------------------------------------------------------------------- budget
