@@ -13,6 +13,7 @@ import argparse
 import statistics
 import tempfile
 import time
+from pathlib import Path
 
 
 def main() -> None:
@@ -25,13 +26,19 @@ def main() -> None:
     ap.add_argument("--first-seed", type=int, default=1, help="seeds first-seed, first-seed + 1, ...")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--protocol", default="paper-sweep")
+    ap.add_argument("--cache", default="", help="keep the session files in CACHE/PROTOCOL and reuse them (diagnose only)")
     a = ap.parse_args()
     effects = [n for n in scenarios.names() if n != "none"]
     seeds = range(a.first_seed, a.first_seed + max(a.seeds, a.none_seeds))
     cases = [(n, s) for n in effects for s in seeds[: a.seeds]] + [("none", s) for s in seeds[: a.none_seeds]]
     t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory() as tmp:
-        results = run_cases(cases, tmp, a.protocol, a.jobs)
+    if a.cache:
+        folder = Path(a.cache) / a.protocol
+        folder.mkdir(parents=True, exist_ok=True)
+        results = run_cases(cases, folder, a.protocol, a.jobs)
+    else:
+        with tempfile.TemporaryDirectory() as tmp:
+            results = run_cases(cases, tmp, a.protocol, a.jobs)
     print(f"{len(cases)} {a.protocol} sessions on the simulated bench, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     print(confusion(results, scenarios.names()))
     none = [r for r in results if r.scenario == "none"]

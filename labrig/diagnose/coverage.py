@@ -48,12 +48,17 @@ def run_case(args: tuple[str, int, str, str]) -> CaseResult:
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
 
+    done = Path(folder) / f"{name.replace('+', '_')}_{seed}.h5"  # a finished run kept from before (bench --cache)
     for attempt in range(2):
+        if done.exists():
+            path = done
+            break
         # the simulated bench runs on a wall-scaled clock: on an overloaded machine its clamp servo can miss a
         # 180 s (simulated) timeout; such a run is a fault of the bench, not data, and is run once more
         path = Path(folder) / f"{name.replace('+', '_')}_{seed}_{attempt}.h5"
         res = execute(RunRequest(protocol, path, effects=scenarios.effects_for(name, seed), seed=seed))
         if res.exit_code == 0:
+            path = path.rename(done)
             break
     else:
         raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
@@ -94,7 +99,7 @@ def confusion(results: list[CaseResult], names: list[str]) -> str:
     labels = names + ["unexplained"]
     head = 'hidden \\ diagnosed'
     lines = [f"{head:20s}" + "".join(f"{lab[:7]:>8s}" for lab in labels)]
-    for n in names:
+    for n in labels:  # a structure outside the catalogue is hidden as "unexplained" (bench/inject.py)
         row = [sum(1 for r in results if r.scenario == n and r.answer == lab) for lab in labels]
         if sum(row):
             lines.append(f"{n:20s}" + "".join(f"{c:8d}" for c in row))

@@ -18,9 +18,11 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
-from labrig.diagnose.catalogue import CATALOGUE, Context, Prediction, baseline
+from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
+from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for
 from labrig.diagnose.nuisance import Refit, refit
+from labrig.diagnose.verdict import STRUCTURE_MARGIN, structured, where as locate_misses
 from labrig.fit.session_data import SessionData
 from labrig.physics import transfer
 
@@ -33,12 +35,14 @@ LINE_SIGMA = 0.6
 # paper-sweep seeds (docs/diagnosis.md). The unit of the held-out error, and the level above which a block "misses".
 CLEAN_ACCURACY = {"frf_d": 0.35, "frf_i": 0.13, "harm_d": 1.7, "harm_i": 0.45, "force": 0.3, "step_d": 0.05, "step_i": 0.03, "line": 0.8}
 DBIC_EFFECT = -25.0  # evidence needed to name an effect
-RATIO_EFFECT = 0.95  # and predict held-out records 5 % better (clean benches reach 0.97-0.98 with the staged baseline)
+# and predict held-out records markedly better: a cause removes most of what the baseline misses (the tuning set's
+# named extensions: ratios 0.004-0.39); one that removes less leaves structure it does not explain, and an extension
+# that only soaks up part of an uncatalogued misfit (the issue's probe: 0.85-0.90) must not be named for it
+RATIO_EFFECT = 0.6
 # a further effect, judged on top of those accepted, must predict the held-out half 20 % better: the residual left by
 # an adopted extension includes its own approximation error, which a flexible second one partly soaks up (single-effect
 # sessions gained 6-11 % from a spurious second back_relaxation or dehydration; real second effects gain far more)
 RATIO_FURTHER = 0.8
-CHI2_STRUCTURED = 4.0  # baseline chi2/dof above this with no explaining effect: "unexplained"
 
 
 def baseline_specimens(fit) -> dict:
@@ -162,21 +166,32 @@ class Candidate:
     chi2_fit: float
     ratio_vs_reference: float = float("nan")  # against the baseline refitted the same way (what decides)
     refit: Refit | None = None
+    held: dict | None = None  # its held-out blocks (``blocks`` output): what structure it leaves
+    ext: Extension | None = None  # the form of the effect's family it was fitted in
+
+    @property
+    def form(self) -> str:
+        return self.ext.form if self.ext else ""
 
 
 def _starts(name: str, ext) -> list[np.ndarray]:
     starts = [np.array(ext.x0, float)]
     if name == "back_relaxation":
-        starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0])]
+        starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0]), np.array([0.8, 2.0, 0.6]), np.array([0.8, 30.0, 0.6])]
     if name == "time_delay":
         starts += [np.array([0.02]), np.array([-0.02])]
     if name == "sensor_offset":
         starts += [np.array([0.6])]
-    return starts
+    if name == "faradaic_current":
+        starts += [np.array([3e-4, 0.1, 0.9]), np.array([3e-4, 0.1, 0.1])]
+    if name == "hysteresis":
+        starts += [np.array([0.5, 300.0])]
+    lo, hi = np.array(ext.lo), np.array(ext.hi)
+    return [x for x in starts if x.size == len(ext.params) and np.all(x >= lo) and np.all(x <= hi)]
 
 
-def _fit_extension(name: str, ctx: Context) -> tuple[np.ndarray, float]:
-    ext = CATALOGUE[name]
+def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tuple[np.ndarray, float]:
+    ext = ext or CATALOGUE[name]
 
     def res(th: np.ndarray) -> np.ndarray:
         bl = blocks(ext.apply(th, ctx), ctx)
@@ -214,20 +229,25 @@ class _Scorer:
         return self._ref
 
     def score(self, name: str) -> Candidate:
-        ext = CATALOGUE[name]
+        """The effect in the form of its family with the best evidence on the fitted half."""
+        return min((self.score_form(name, ext) for ext in FAMILIES[name]), key=lambda c: c.delta_bic)
+
+    def score_form(self, name: str, ext: Extension) -> Candidate:
         if not (ext.refit_mechanics and self.refit_mechanics):
-            th, c = _fit_extension(name, self.ctx_fit)
-            h = nrmse(blocks(ext.apply(th, self.ctx_held), self.ctx_held), self.where)
+            th, c = _fit_extension(name, self.ctx_fit, ext)
+            held = blocks(ext.apply(th, self.ctx_held), self.ctx_held)
+            h = nrmse(held, self.where)
             ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
             dbic = c - self.c0 + len(th) * math.log(max(self.n, 2))
-            return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio)
+            return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio, held=held, ext=ext)
         r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext))
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]
-        h = nrmse(blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held), self.where)
+        held = blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held)
+        h = nrmse(held, self.where)
         c_ref, h_ref = self.reference()
         params = {**dict(zip(ext.params, map(float, r.theta))), **r.params()}
         ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-        return Candidate(name, params, c - c_ref + len(r.theta) * math.log(max(self.n, 2)), h, ratio, c, h / h_ref if h_ref > 0 else float("nan"), r)
+        return Candidate(name, params, c - c_ref + len(r.theta) * math.log(max(self.n, 2)), h, ratio, c, h / h_ref if h_ref > 0 else float("nan"), r, held, ext)
 
 
 def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_held: dict,
@@ -250,13 +270,13 @@ def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, 
     same = ctx_held is ctx_fit
     ctx_fit = dataclasses.replace(ctx_fit)  # shallow copies: the callers' contexts keep their base
     ctx_held = ctx_fit if same else dataclasses.replace(ctx_held)
-    ext = CATALOGUE[c.name]
+    ext = c.ext or CATALOGUE[c.name]
     th = np.array([c.params[p] for p in ext.params])
     pf = ext.apply(th, ctx_fit)
     ph = pf if same else ext.apply(th, ctx_held)  # both on the current base, then adopt
-    ctx_fit.base, ctx_fit.chain = pf, [*ctx_fit.chain, (c.name, th)]
+    ctx_fit.base, ctx_fit.chain = pf, [*ctx_fit.chain, (ext, th)]
     if not same:
-        ctx_held.base, ctx_held.chain = ph, [*ctx_held.chain, (c.name, th)]
+        ctx_held.base, ctx_held.chain = ph, [*ctx_held.chain, (ext, th)]
     return ctx_fit, ctx_held
 
 
@@ -287,8 +307,10 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     # effect is judged against what the first leaves, not against a residual it cannot explain
     accepted = list(named[:1])
     cf, ch = ctx_fit, ctx_held
+    adopted = 0
     while accepted and len(accepted) < 3:
         cf, ch = _adopt(accepted[-1], cf, ch)
+        adopted += 1
         c1, _ = chi2(blocks(baseline(cf), cf))
         h1 = blocks(baseline(ch), ch)
         # the mechanics were refitted in the first round (with the first effect, or not at all): later effects
@@ -299,14 +321,24 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         accepted.append(rest[0])
     c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
     dof_chi2 = c_all / max(n_all, 1)
+    accuracy = {k: CLEAN_ACCURACY.get(k, 1.0) for k in held_rms}
+    structure = structured(held_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
     if named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0
         confidence = float(min(1.0, (second - named[0].heldout_ratio) / max(1.0 - named[0].heldout_ratio, 1e-9)))
-    elif dof_chi2 > CHI2_STRUCTURED:
-        verdict, cause, confidence = "unexplained", None, float(1.0 - 1.0 / dof_chi2)
+    elif structure:
+        # structure no catalogued extension removes: confidence grows with how far the worst block sits beyond
+        verdict, cause = "unexplained", None
+        confidence = float(1.0 - STRUCTURE_MARGIN / max(structure.values()))
     else:
-        verdict, cause, confidence = "none", None, float(min(1.0, 1.0 / max(dof_chi2, 1e-9)) if dof_chi2 > 1 else 1.0)
+        verdict, cause = "none", None
+        worst = max((held_rms[k] / accuracy[k] for k in held_rms), default=0.0)
+        confidence = float(min(1.0, 1.0 - (worst - 1.0) / (STRUCTURE_MARGIN - 1.0))) if worst > 1.0 else 1.0
+    # where the remaining misfit sits: the baseline's, or what the accepted effects leave on the held-out half
+    if accepted and adopted < len(accepted):
+        cf, ch = _adopt(accepted[-1], cf, ch)
+    residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(b_held, ctx_held, accuracy)
     best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
     return {
         "verdict": verdict,
@@ -314,14 +346,18 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         "confidence": confidence,
         "effects": [c.name for c in accepted],
         # each accepted effect as it was judged: the first against the baseline, the others on top of those before
-        "effects_detail": [{"name": c.name, "params": c.params, "delta_bic": c.delta_bic, "heldout_ratio": c.heldout_ratio} for c in accepted],
+        "effects_detail": [{"name": c.name, "form": c.form, "params": c.params, "delta_bic": c.delta_bic, "heldout_ratio": c.heldout_ratio} for c in accepted],
         "candidates": [
-            {"name": c.name, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
+            {"name": c.name, "form": c.form, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
             for c in cands
         ],
         "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": held_rms, "missed": sorted(where),
                      "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY}},
-        "extended": {"name": best.name, "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+        "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
+                     "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+        "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
+                     "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
+                             "structure_margin x its attainable accuracy is structure"},
         "gain": {"heldout_nrmse_ratio": best.heldout_ratio, "delta_bic": best.delta_bic},
         "split": {"fit": sorted(p for p in fit_set if p is not None), "heldout": sorted(p for p in held_set if p is not None), "same_records": same},
         "elapsed_s": time.perf_counter() - t0,
