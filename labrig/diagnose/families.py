@@ -156,8 +156,9 @@ FAMILIES["faradaic_current"] += [
           _branch(_exponential), "Butler-Volmer branch i ~ exp(a v/v_t) - exp(-(1 - a) v/v_t) (a -> 1: Tafel, growing exponentially)"),
 ]
 FAMILIES["hysteresis"] += [
+    # the baseline's mechanics took in the gain and phase the play costs at each pressure's amplitudes: refitted with it
     _form("hysteresis", "play_output", ("weight", "play_um"), (0.3, 50.0), (0.0, 0.1), (1.0, 5000.0), _play_output,
-          "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side"),
+          "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side", refit_mechanics=True),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",

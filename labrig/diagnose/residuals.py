@@ -72,14 +72,15 @@ class HeldoutResiduals:
     same_records: bool  # one pressure only: fitted and held-out records are the same
     blocks: list[BlockResiduals]
     missed: set[str] = field(default_factory=set)  # the blocks the baseline misses: where the held-out error is measured
+    accuracy: dict[str, float] | None = None  # the baseline's attainable accuracy per block on this session
 
     @property
     def nrmse_before(self) -> float:
-        return engine.heldout_error({b.name: b.rms_before for b in self.blocks}, self.missed)
+        return engine.heldout_error({b.name: b.rms_before for b in self.blocks}, self.missed, self.accuracy)
 
     @property
     def nrmse_after(self) -> float:
-        return engine.heldout_error({b.name: b.rms_after for b in self.blocks}, self.missed)
+        return engine.heldout_error({b.name: b.rms_after for b in self.blocks}, self.missed, self.accuracy)
 
     def evidence(self, most: int = 2) -> list[BlockResiduals]:
         """The blocks the extension fixes most: those within half of the largest improvement, best first."""
@@ -111,6 +112,7 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
     ext = form(name, ext_info.get("form"))
     theta = np.array([float(ext_info["params"][p]) for p in ext.params])
     ctx, held, same = heldout_context(sd, specimens, feats)
+    accuracy = engine.attainable_accuracy(ctx)
     before = engine.blocks(baseline(ctx), ctx)
     after_ctx = with_fitted_mechanics(ctx, ext_info["params"])  # refitted extensions carry their mechanics
     after = engine.blocks(ext.apply(theta, after_ctx), after_ctx)
@@ -122,4 +124,4 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
         x, label, log, series = abscissa(key, ctx, b.size)
         out.append(BlockResiduals(key, b, a, x, label, log, series))
     return HeldoutResiduals(name, dict(ext_info["params"]), bool(ext_info.get("accepted", result.get("cause") == name)),
-                            sorted(p for p in held if p is not None), same, out, engine.missed({b.name: b.rms_before for b in out}))
+                            sorted(p for p in held if p is not None), same, out, engine.missed({b.name: b.rms_before for b in out}, accuracy), accuracy)
