@@ -64,9 +64,9 @@ def validation(a) -> list:
     sys.path.insert(0, str(REPO / "bench"))
     import inject
 
-    todo = inject.cases(extra=a.extra)
+    todo = inject.cases(extra=a.extra, full=a.full)
     t0 = time.perf_counter()
-    results = inject.run_all(Path(a.cache or REPO / ".cache") / "validation", todo, a.jobs)
+    results = inject.run_all(Path(a.cache or REPO / ".cache") / "validation", todo, a.jobs, a.reuse)
     print(f"== validation set: {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     inject.report(results)
     return [r for r, _ in results]
@@ -83,6 +83,8 @@ def main() -> None:
     ap.add_argument("--cache", default="", help="keep the session files in CACHE/{tuning,validation} and reuse them")
     ap.add_argument("--make-only", action="store_true", help="with --cache: only run the tuning set's sessions")
     ap.add_argument("--extra", action="store_true", help="the validation set's further forms too")
+    ap.add_argument("--full", action="store_true", help="the whole validation set (every form on every seed)")
+    ap.add_argument("--reuse", action="store_true", help="validation: take a diagnosis this code stored in a case's file")
     a = ap.parse_args()
     results = []
     if a.set in ("both", "tuning"):

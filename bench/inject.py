@@ -318,11 +318,19 @@ def cr_power(s: Session) -> None:
 
 
 def _dry(s: Session, loss: Callable[[np.ndarray], np.ndarray]) -> None:
+    """Gain and conductance lost with the session's time; a spectrum (no clock of its own in the CSV) is taken at
+    the start of the time series recorded after it, its impedance up as the conductance is down."""
     share = s.rng.uniform(0.3, 1.0)  # the conductance dries more slowly than the gain
-    for r in s.series():
-        x = loss((r.cols["t_s"] - s.t0) / (s.t1 - s.t0))
-        r.cols["disp_m"] = r.cols["disp_m"] * (1 - x)
-        r.cols["i_A"] = r.cols["i_A"] * (1 - share * x)
+    u = lambda t: (t - s.t0) / (s.t1 - s.t0)  # noqa: E731
+    for k, r in enumerate(s.recs):
+        if r.series:
+            x = loss(u(r.cols["t_s"]))
+            r.cols["disp_m"] = r.cols["disp_m"] * (1 - x)
+            r.cols["i_A"] = r.cols["i_A"] * (1 - share * x)
+            continue
+        after = next((q for q in s.recs[k + 1 :] if q.series), None)
+        x = loss(u(np.array([after.cols["t_s"][0] if after else s.t1])))[0]
+        r.cols["z_re_ohm"], r.cols["z_im_ohm"] = r.cols["z_re_ohm"] / (1 - share * x), r.cols["z_im_ohm"] / (1 - share * x)
 
 
 def dh_linear(s: Session) -> None:
@@ -504,19 +512,29 @@ class Case:
         return f"{self.truth}-{self.form}-{self.seed}-{self.base}-{self.variant}"
 
 
-def cases(only: str | None = None, extra: bool = False) -> list[Case]:
+QUICK_CLEAN = [(b, v) for b in ("paper_21", "paper_22", "paper_23") for v in ("asrun", "no_spectra", "two_pressures")] + [("long_21", "asrun")]
+
+
+def cases(only: str | None = None, extra: bool = False, full: bool = False) -> list[Case]:
+    """The validation cases. ``full``: every form on every seed of EFFECT_PLAN (+ the 40 mm strip for the first
+    form), every clean variant. Default (what a shared 2-core machine runs in ~45 min): three seeds per effect with
+    its forms in turn (each form at least once), every outside structure on two seeds, ten clean sessions."""
     out = []
     for truth, forms in FORMS.items():
         if only and truth != only:
             continue
-        forms = {**forms, **(EXTRA_FORMS.get(truth, {}) if extra else {})}
+        forms = list({**forms, **(EXTRA_FORMS.get(truth, {}) if extra else {})})
         if truth == "none":
-            out += [Case("none", "clean", k, b, v) for k, (b, v) in enumerate(CLEAN_PLAN)]
-            continue
-        for j, form in enumerate(forms):
-            plan = EFFECT_PLAN + (LONG_PLAN if j == 0 else [])
-            out += [Case(truth, form, k, b, v) for k, (b, v) in enumerate(plan)]
-    return out
+            out += [Case("none", "clean", k, b, v) for k, (b, v) in enumerate(CLEAN_PLAN if full else QUICK_CLEAN)]
+        elif full:
+            for j, form in enumerate(forms):
+                plan = EFFECT_PLAN + (LONG_PLAN if j == 0 else [])
+                out += [Case(truth, form, k, b, v) for k, (b, v) in enumerate(plan)]
+        elif truth == "unexplained":
+            out += [Case(truth, form, k, *EFFECT_PLAN[k]) for form in forms for k in (0, 2)]
+        else:
+            out += [Case(truth, forms[k % len(forms)], k, b, v) for k, (b, v) in enumerate(EFFECT_PLAN)]
+    return sorted(out, key=lambda c: c.seed % 3)  # every kind of case early: a run cut short still covers them all
 
 
 def base_export(cache: Path, base: str) -> Path:
@@ -567,26 +585,41 @@ def run_case(args: tuple[str, Case]):
     from labrig.cli.diagnose_cmd import run_diagnosis
     from labrig.diagnose.coverage import CaseResult
 
-    cache, case = Path(args[0]), args[1]
+    cache, case, reuse = Path(args[0]), args[1], args[2]
     path = make_case(cache, case)
     t0 = time.perf_counter()
     try:
-        fitted = load_and_fit(path, "diagnose")
-        out = run_diagnosis(path, fitted)
+        out = stored(path) if reuse else None
+        if out is None:
+            fitted = load_and_fit(path, "diagnose")
+            out = run_diagnosis(path, fitted)
     except Exception as exc:  # a case the fit or diagnosis cannot take is a wrong answer, said so
         out = {"verdict": f"error: {type(exc).__name__}: {exc}"[:80], "cause": None, "effects": [], "gain": {"heldout_nrmse_ratio": float("nan"), "delta_bic": float("nan")}}
     return CaseResult(case.truth, case.seed, out["verdict"], out["cause"], list(out["effects"]), float(out["gain"]["heldout_nrmse_ratio"]),
                       float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path)), case
 
 
-def run_all(cache: Path, todo: list[Case], jobs: int = 2) -> list:
+def stored(path: Path) -> dict | None:
+    """The diagnosis a run of this code left in the case's file (one with ``baseline.accuracy``), if any."""
+    import json
+
+    from labrig.store import SessionFile
+
+    try:
+        out = json.loads(SessionFile(path).read_analysis("diagnosis")["result_json"])
+    except Exception:  # nothing stored
+        return None
+    return out if "accuracy" in out.get("baseline", {}) and "form" in out.get("extended", {}) else None
+
+
+def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False) -> list:
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
     for b in dict.fromkeys(c.base for c in todo):  # the bases first, one at a time (each is a simulated run)
         base_export(cache, b)
     with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        return list(pool.map(run_case, [(str(cache), c) for c in todo]))
+        return list(pool.map(run_case, [(str(cache), c, reuse) for c in todo]))
 
 
 def report(results: list) -> dict[str, float]:
@@ -623,9 +656,11 @@ def main() -> None:
     ap.add_argument("--only", default=None, help="one truth (effect name, unexplained or none)")
     ap.add_argument("--make-only", action="store_true", help="make the case files, do not diagnose")
     ap.add_argument("--extra", action="store_true", help="the further forms too (EXTRA_FORMS)")
+    ap.add_argument("--full", action="store_true", help="every form on every seed, every clean variant")
+    ap.add_argument("--reuse", action="store_true", help="take a diagnosis this code stored in a case's file")
     a = ap.parse_args()
     cache = Path(a.cache)
-    todo = cases(a.only, a.extra)
+    todo = cases(a.only, a.extra, a.full)
     t0 = time.perf_counter()
     if a.make_only:
         for b in dict.fromkeys(c.base for c in todo):
@@ -637,7 +672,7 @@ def main() -> None:
             list(pool.map(make_case, [cache] * len(todo), todo))
         print(f"{len(todo)} cases made in {time.perf_counter() - t0:.0f} s")
         return
-    results = run_all(cache, todo, a.jobs)
+    results = run_all(cache, todo, a.jobs, a.reuse)
     print(f"{len(todo)} validation cases, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     report(results)
 

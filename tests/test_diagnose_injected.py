@@ -4,6 +4,7 @@ validation set's injector (bench/inject.py), imported and diagnosed as a user wo
 one structure outside the catalogue and one further faradaic form, on the suite's clean seed-1 sweep."""
 
 import importlib.util
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +16,7 @@ from labrig.cli.diagnose_cmd import run_diagnosis
 
 BENCH_CASES = [("none", 1)]  # shared with test_fit and the coverage (conftest)
 _spec = importlib.util.spec_from_file_location("inject", Path(__file__).parents[1] / "bench" / "inject.py")
-inject = importlib.util.module_from_spec(_spec)
+inject = sys.modules.setdefault("inject", importlib.util.module_from_spec(_spec))  # its dataclasses look their module up
 _spec.loader.exec_module(inject)
 
 

@@ -11,6 +11,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side) |
 | time_delay | pure delay; first-order lag (a sensor's output filter) |
+| strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential decay; linear decay |
 """
 
@@ -109,6 +110,30 @@ def _play_output(th, ctx: Context):
     return p
 
 
+# ------------------------------------------------------------------------------------------ strain as a gain loss
+
+
+def _strain_modulation(th, ctx: Context):
+    """Electrode resistance rising with the bend, read as an instantaneous loss of gain on displacement and current:
+    y = y_lin (1 - k e), e = 2 (a max(d, 0) + (1 - a) max(-d, 0)) / L (a = 0.5: both electrodes alike; a -> 0 or 1:
+    one electrode, one side of the bend: even harmonics). Harmonics over one period, the step sample by sample."""
+    kd, ki, a = th
+    p = baseline(ctx)
+    bend = lambda d: 2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length  # noqa: E731
+    for k, s in enumerate(ctx.sines):
+        drv = _drive(s)
+        e = bend((p.Hd[k] * drv * np.exp(1j * _TH)).real)
+        for H, h, gain in ((p.Hd, p.hd, kd), (p.Hi, p.hi, ki)):
+            x1 = H[k] * drv
+            c = np.fft.fft((x1 * np.exp(1j * _TH)).real * (1 - gain * e))[1:4] * 2 / _N
+            x = np.array([0.0, h[k, 0] * x1, h[k, 1] * x1]) + c
+            H[k], h[k] = x[0] / drv, x[1:] / x[0]
+    for k, d in enumerate(p.step_d):
+        e = bend(d)
+        p.step_d[k], p.step_i[k] = d * (1 - kd * e), p.step_i[k] * (1 - ki * e)
+    return p
+
+
 # ------------------------------------------------------------------------------------------ lag, linear drying
 
 
@@ -163,6 +188,10 @@ FAMILIES["hysteresis"] += [
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",
           refit_mechanics=True),
+]
+FAMILIES["strain_resistance"] += [
+    _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
+          _strain_modulation, "gain of displacement and current falling with the bend, y (1 - k e(d)): resistance up with curvature"),
 ]
 FAMILIES["dehydration"] += [
     _form("dehydration", "linear", ("gain_loss_per_s", "conductance_loss_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-3, 1e-3),
