@@ -7,7 +7,9 @@
   threshold saw it.
 
 Run: python bench/diagnose.py [--set both|tuning|validation] [--seeds 3] [--none-seeds 10] [--first-seed 1]
-                              [--jobs 2] [--protocol paper-sweep] [--cache .cache]
+                              [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
+(--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
+wall time, the fit not included)
 Targets (issue 12): tuning >= 95 % right and clean -> none >= 95 %; validation >= 90 % right over the effects,
 outside the catalogue -> unexplained >= 90 %, clean -> none >= 95 %; the named extension at least halves the
 held-out error (ratio <= 0.5); `labrig diagnose` (fit + diagnosis) <= 60 s.
@@ -25,6 +27,23 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 
 
+def from_store(cases: list[tuple[str, int]], folder: Path) -> list:
+    """``--stored``: the diagnoses the sessions' files hold (written by `labrig diagnose` with this code), none run."""
+    sys.path.insert(0, str(REPO / "bench"))
+    import inject
+
+    from labrig.diagnose.coverage import CaseResult
+
+    out = []
+    for name, seed in cases:
+        path = folder / f"{name.replace('+', '_')}_{seed}.h5"
+        d = inject.stored(path) if path.exists() else None
+        if d is not None:
+            out.append(CaseResult(name, seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
+                                  float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)))
+    return out
+
+
 def tuning(a) -> list:
     from labrig.diagnose.coverage import confusion, run_cases
     from mock_devices import scenarios
@@ -33,7 +52,9 @@ def tuning(a) -> list:
     seeds = range(a.first_seed, a.first_seed + max(a.seeds, a.none_seeds))
     cases = [(n, s) for n in effects for s in seeds[: a.seeds]] + [("none", s) for s in seeds[: a.none_seeds]]
     t0 = time.perf_counter()
-    if a.cache:
+    if a.stored:
+        results = from_store(cases, Path(a.cache or REPO / ".cache") / "tuning" / a.protocol)
+    elif a.cache:
         folder = Path(a.cache) / "tuning" / a.protocol
         folder.mkdir(parents=True, exist_ok=True)
         results = run_cases(cases, folder, a.protocol, a.jobs, a.make_only)
@@ -43,7 +64,7 @@ def tuning(a) -> list:
     else:
         with tempfile.TemporaryDirectory() as tmp:
             results = run_cases(cases, tmp, a.protocol, a.jobs)
-    print(f"== tuning set: {len(cases)} {a.protocol} sessions on the simulated bench, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
+    print(f"== tuning set: {len(results)} of {len(cases)} {a.protocol} sessions on the simulated bench, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     print(confusion(results, scenarios.names()))
     none = [r for r in results if r.scenario == "none"]
     print(f"none right: {sum(r.right for r in none)}/{len(none)}")
@@ -66,8 +87,20 @@ def validation(a) -> list:
 
     todo = inject.cases(extra=a.extra, full=a.full)
     t0 = time.perf_counter()
-    results = inject.run_all(Path(a.cache or REPO / ".cache") / "validation", todo, a.jobs, a.reuse)
-    print(f"== validation set: {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
+    folder = Path(a.cache or REPO / ".cache") / "validation"
+    if a.stored:
+        from labrig.diagnose.coverage import CaseResult
+
+        results = []
+        for c in todo:
+            path = folder / "cases" / f"{c.name}.h5"
+            d = inject.stored(path) if path.exists() else None
+            if d is not None:
+                results.append((CaseResult(c.truth, c.seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
+                                           float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)), c))
+    else:
+        results = inject.run_all(folder, todo, a.jobs, a.reuse)
+    print(f"== validation set: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     inject.report(results)
     return [r for r, _ in results]
 
@@ -85,6 +118,7 @@ def main() -> None:
     ap.add_argument("--extra", action="store_true", help="the validation set's further forms too")
     ap.add_argument("--full", action="store_true", help="the whole validation set (every form on every seed)")
     ap.add_argument("--reuse", action="store_true", help="validation: take a diagnosis this code stored in a case's file")
+    ap.add_argument("--stored", action="store_true", help="run nothing: report the diagnoses the cached files hold")
     a = ap.parse_args()
     results = []
     if a.set in ("both", "tuning"):
@@ -92,7 +126,7 @@ def main() -> None:
     if a.set in ("both", "validation") and not a.make_only:
         results += validation(a)
     times = [r.diagnose_s for r in results]
-    if times:
+    if times and not a.stored:
         print(f"labrig diagnose wall time (fit + diagnosis), {a.jobs} at a time: median {statistics.median(times):.1f} s, "
               f"max {max(times):.1f} s (target <= 60 s)")
 
