@@ -12,7 +12,6 @@ names the effect by its signature; the form found is reported (``extended.form``
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side) |
 | time_delay | pure delay; first-order lag (a sensor's output filter) |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
-| dehydration | exponential decay; linear decay |
 """
 
 from __future__ import annotations
@@ -134,7 +133,7 @@ def _strain_modulation(th, ctx: Context):
     return p
 
 
-# ------------------------------------------------------------------------------------------ lag, linear drying
+# ------------------------------------------------------------------------------------------ lag
 
 
 def _lag(th, ctx: Context):
@@ -145,21 +144,6 @@ def _lag(th, ctx: Context):
     for k, st in enumerate(ctx.steps):
         fs = 1.0 / np.median(np.diff(st.t))
         p.step_d[k] = timeresp.simulate(lambda s: 1 / (1 + s * tau), p.step_d[k], fs)
-    return p
-
-
-def _linear_drying(th, ctx: Context):
-    rate_d, rate_i = th
-    p = baseline(ctx)
-    t0 = ctx.feats.t0
-    for k, s in enumerate(ctx.sines):
-        dt = max(s.t_start - t0, 0.0)
-        p.Hd[k] *= 1 - rate_d * dt
-        p.Hi[k] *= 1 - rate_i * dt
-    for k, st in enumerate(ctx.steps):
-        dt = max(st.t_start - t0, 0.0)
-        p.step_d[k] = p.step_d[k] * (1 - rate_d * dt)
-        p.step_i[k] = p.step_i[k] * (1 - rate_i * dt)
     return p
 
 
@@ -192,10 +176,6 @@ FAMILIES["time_delay"] += [
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
           _strain_modulation, "gain of displacement and current falling with the bend, y (1 - k e(d)): resistance up with curvature"),
-]
-FAMILIES["dehydration"] += [
-    _form("dehydration", "linear", ("gain_loss_per_s", "conductance_loss_per_s"), (0.0, 0.0), (-1e-3, -1e-3), (1e-3, 1e-3),
-          _linear_drying, "gain and conductance fall linearly with time"),
 ]
 
 
