@@ -1,53 +1,135 @@
-"""Benchmark: wall time of `labrig diagnose` (fit + diagnosis) on paper-sweep sessions, and the confusion matrix
-of the diagnosis over the effect catalogue on the simulated bench (each effect hidden with several seeds, the
-clean bench with more), with the held-out error ratio of the named extension.
+"""Benchmark: the diagnosis' confusion matrix on two sets, and the wall time of `labrig diagnose`.
 
-Run: python bench/diagnose.py [--seeds 3] [--none-seeds 10] [--first-seed 1] [--jobs 2] [--protocol paper-sweep]
-Targets: diagnose < 60 s; >= 95 % right overall; `none` right in >= 95 %; the named extension at least halves
-the held-out error (ratio <= 0.5).
+* Tuning set: every catalogue effect hidden in the simulated bench (its own forms, mock_devices/effects.py) with
+  several seeds, the clean bench with more. The diagnosis' thresholds were set on this set.
+* Validation set (bench/inject.py): clean paper sweeps exported, other forms of each effect and structures
+  outside the catalogue written into the CSVs, imported again, with protocol and data-shape variants. No
+  threshold saw it.
+
+Run: python bench/diagnose.py [--set both|tuning|validation] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+                              [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
+(--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
+wall time, the fit not included)
+Targets (issue 12): tuning >= 95 % right and clean -> none >= 95 %; validation >= 90 % right over the effects,
+outside the catalogue -> unexplained >= 90 %, clean -> none >= 95 %; the named extension at least halves the
+held-out error (ratio <= 0.5); `labrig diagnose` (fit + diagnosis) <= 60 s.
 """
 
 from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import tempfile
 import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))  # bench/ tooling is imported as the bench package (from bench.coverage import ...)
+
+
+def from_store(cases: list[tuple[str, int]], folder: Path) -> list:
+    """``--stored``: the diagnoses the sessions' files hold (written by `labrig diagnose` with this code), none run."""
+    sys.path.insert(0, str(REPO / "bench"))
+    import inject
+
+    from bench.coverage import CaseResult
+
+    out = []
+    for name, seed in cases:
+        path = folder / f"{name.replace('+', '_')}_{seed}.h5"
+        d = inject.stored(path) if path.exists() else None
+        if d is not None:
+            out.append(CaseResult(name, seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
+                                  float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)))
+    return out
+
+
+def tuning(a) -> list:
+    from bench.coverage import confusion, run_cases
+    from mock_devices import scenarios
+
+    effects = [n for n in scenarios.names() if n != "none"]
+    seeds = range(a.first_seed, a.first_seed + max(a.seeds, a.none_seeds))
+    cases = [(n, s) for n in effects for s in seeds[: a.seeds]] + [("none", s) for s in seeds[: a.none_seeds]]
+    t0 = time.perf_counter()
+    if a.stored:
+        results = from_store(cases, Path(a.cache or REPO / ".cache") / "tuning" / a.protocol)
+    elif a.cache:
+        folder = Path(a.cache) / "tuning" / a.protocol
+        folder.mkdir(parents=True, exist_ok=True)
+        results = run_cases(cases, folder, a.protocol, a.jobs, a.make_only)
+        if a.make_only:
+            print(f"{len(results)} sessions in {folder}: {time.perf_counter() - t0:.0f} s")
+            return []
+    else:
+        with tempfile.TemporaryDirectory() as tmp:
+            results = run_cases(cases, tmp, a.protocol, a.jobs)
+    print(f"== tuning set: {len(results)} of {len(cases)} {a.protocol} sessions on the simulated bench, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
+    print(confusion(results, scenarios.names()))
+    none = [r for r in results if r.scenario == "none"]
+    print(f"none right: {sum(r.right for r in none)}/{len(none)}")
+    if none:  # what the priors of the attainable accuracy must cover: the baseline on clean benches
+        from labrig.diagnose.engine import CLEAN_ACCURACY
+
+        blocks = {k: max(r.output["baseline"]["blocks"].get(k, 0.0) for r in none) for k in CLEAN_ACCURACY}
+        print("clean benches, largest held-out block RMS / CLEAN_ACCURACY: " + ", ".join(f"{k} {v:.3g}/{CLEAN_ACCURACY[k]:g}" for k, v in blocks.items()))
+    print("held-out NRMSE ratio of the named extension, right answers (target <= 0.5):")
+    for n in effects:
+        rs = [f"{r.heldout_ratio:.3f} ({r.output['extended']['form']})" for r in results if r.scenario == n and r.right]
+        if rs:
+            print(f"  {n:20s} " + " ".join(rs))
+    return results
+
+
+def validation(a) -> list:
+    sys.path.insert(0, str(REPO / "bench"))
+    import inject
+
+    todo = inject.cases(extra=a.extra, full=a.full)
+    t0 = time.perf_counter()
+    folder = Path(a.cache or REPO / ".cache") / "validation"
+    if a.stored:
+        from bench.coverage import CaseResult
+
+        results = []
+        for c in todo:
+            path = folder / "cases" / f"{c.name}.h5"
+            d = inject.stored(path) if path.exists() else None
+            if d is not None:
+                results.append((CaseResult(c.truth, c.seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
+                                           float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)), c))
+    else:
+        results = inject.run_all(folder, todo, a.jobs, a.reuse)
+    print(f"== validation set: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
+    inject.report(results)
+    return [r for r, _ in results]
 
 
 def main() -> None:
-    from labrig.diagnose.coverage import confusion, run_cases
-    from mock_devices import scenarios
-
     ap = argparse.ArgumentParser()
+    ap.add_argument("--set", choices=("both", "tuning", "validation"), default="both")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--none-seeds", type=int, default=10)
     ap.add_argument("--first-seed", type=int, default=1, help="seeds first-seed, first-seed + 1, ...")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--protocol", default="paper-sweep")
+    ap.add_argument("--cache", default="", help="keep the session files in CACHE/{tuning,validation} and reuse them")
+    ap.add_argument("--make-only", action="store_true", help="with --cache: only run the tuning set's sessions")
+    ap.add_argument("--extra", action="store_true", help="the validation set's further forms too")
+    ap.add_argument("--full", action="store_true", help="the whole validation set (every form on every seed)")
+    ap.add_argument("--reuse", action="store_true", help="validation: take a diagnosis this code stored in a case's file")
+    ap.add_argument("--stored", action="store_true", help="run nothing: report the diagnoses the cached files hold")
     a = ap.parse_args()
-    effects = [n for n in scenarios.names() if n != "none"]
-    seeds = range(a.first_seed, a.first_seed + max(a.seeds, a.none_seeds))
-    cases = [(n, s) for n in effects for s in seeds[: a.seeds]] + [("none", s) for s in seeds[: a.none_seeds]]
-    t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory() as tmp:
-        results = run_cases(cases, tmp, a.protocol, a.jobs)
-    print(f"{len(cases)} {a.protocol} sessions on the simulated bench, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
-    print(confusion(results, scenarios.names()))
-    none = [r for r in results if r.scenario == "none"]
-    print(f"none right: {sum(r.right for r in none)}/{len(none)}")
-    if none:  # what CLEAN_ACCURACY (the unit of the held-out error) must cover: the baseline on clean benches
-        from labrig.diagnose.engine import CLEAN_ACCURACY
-
-        blocks = {k: max(r.output["baseline"]["blocks"].get(k, 0.0) for r in none) for k in CLEAN_ACCURACY}
-        print("clean benches, largest held-out block RMS / CLEAN_ACCURACY: " + ", ".join(f"{k} {v:.3g}/{CLEAN_ACCURACY[k]:g}" for k, v in blocks.items()))
+    results = []
+    if a.set in ("both", "tuning"):
+        results += tuning(a)
+    if a.set in ("both", "validation") and not a.make_only:
+        results += validation(a)
     times = [r.diagnose_s for r in results]
-    print(f"labrig diagnose wall time (fit + diagnosis): median {statistics.median(times):.1f} s, max {max(times):.1f} s (target < 60 s)")
-    print("held-out NRMSE ratio of the named extension, right answers (target <= 0.5):")
-    for n in effects:
-        rs = [r.heldout_ratio for r in results if r.scenario == n and r.right]
-        if rs:
-            print(f"  {n:20s} " + " ".join(f"{x:.3f}" for x in rs))
+    if times and not a.stored:
+        print(f"labrig diagnose wall time (fit + diagnosis), {a.jobs} at a time: median {statistics.median(times):.1f} s, "
+              f"max {max(times):.1f} s (target <= 60 s)")
 
 
 if __name__ == "__main__":

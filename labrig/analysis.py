@@ -76,8 +76,8 @@ def compute_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str
 
     sd, fit = fitted or load_and_fit(path, "diagnose")
     out = jsonable(diagnose(sd, baseline_specimens(fit)))
-    if out["cause"]:
-        out["extension"] = CATALOGUE[out["cause"]].describe
+    if out["cause"]:  # the form the cause was found in (its family's: labrig.diagnose.families)
+        out["extension"] = out["extended"].get("form_describe") or CATALOGUE[out["cause"]].describe
     return out
 
 

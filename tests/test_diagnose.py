@@ -50,3 +50,47 @@ def test_play_operator_follows_its_recursion():
                 prev = min(max(prev, xk - r), xk + r)
                 y[k] = prev
             np.testing.assert_allclose(_play(x, r), y, rtol=0, atol=1e-12)
+
+
+def test_a_branch_form_gives_the_harmonics_of_its_polynomial():
+    """The faradaic family's numerical describing function against the odd polynomial's closed form
+    (i3 = g3 a^3 / 4, i1 = (g1 + 3 g3 |a|^2 / 4) a), and the exponential form: a = 0.5 is sinh, a -> 1 one-sided."""
+    import numpy as np
+
+    from labrig.diagnose import families
+
+    g1, g3, a = 2e-4, 5e-4, 0.8 * np.exp(0.3j)
+    c = np.fft.fft(families._poly3((a * np.exp(1j * families._TH)).real, (g1, 0.0, g3)))[1:4] * 2 / families._N
+    np.testing.assert_allclose(c[0], (g1 + 0.75 * g3 * abs(a) ** 2) * a, rtol=1e-9)
+    np.testing.assert_allclose(c[2], 0.25 * g3 * a**3, rtol=1e-9)
+    assert abs(c[1]) < 1e-15  # odd: no 2nd harmonic
+    v = np.linspace(-1, 1, 11)
+    np.testing.assert_allclose(families._exponential(v, (1e-3, 0.1, 0.5)), 1e-3 * np.sinh(5 * v) / np.sinh(5), rtol=1e-9)
+    tafel = families._exponential(v, (1e-3, 0.1, 1.0))
+    assert tafel[-1] == 1e-3 and np.all(np.abs(tafel[:5]) < 1e-6)  # grows with v, nothing below 0 V
+
+
+def test_where_names_the_band_the_order_and_the_time():
+    """The verdict's localisation on a synthetic context: a frf_d residual confined to 2-5 Hz, a 3rd-harmonic one,
+    and a step residual late in the record."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose.verdict import where
+
+    f = np.logspace(-1, np.log10(20), 15)
+    sines = [SimpleNamespace(f=x, amplitude_V=0.5) for x in f]
+    t = np.arange(100) * 0.02
+    ctx = SimpleNamespace(sines=sines, steps=[SimpleNamespace(t=t, pressure_kPa=612.0)], lines=[])
+    frf = np.zeros(30)
+    frf[:15][(f > 2) & (f < 5)] = 3.0
+    harm = np.zeros(60)
+    harm[1:30:2] = 2.0  # the 3f real parts
+    step = np.where(t > 1.5, 4.0, 0.01)
+    out = {w["block"]: w for w in where({"frf_d": (frf, None), "harm_i": (harm, None), "step_d": (step, None)}, ctx,
+                                        {"frf_d": 0.35, "harm_i": 0.45, "step_d": 0.05})}
+    assert 2 < out["frf_d"]["band"][0] and out["frf_d"]["band"][1] < 5
+    assert out["harm_i"]["harmonic"] == 3
+    assert out["step_d"]["time_s"][0] > 1.5 and "612 kPa" in out["step_d"]["detail"]
+    assert all(w["level"] > 0 and w["over_accuracy"] > 1 for w in out.values())

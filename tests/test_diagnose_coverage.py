@@ -1,9 +1,10 @@
-"""Issue 6's coverage on the simulated bench, end to end (run -> session file -> fit -> diagnosis): every
-catalogue effect hidden in a paper-sweep with three seeds, and the clean bench with ten seeds.
+"""The diagnosis over the effect catalogue on the simulated bench, end to end (run -> session file -> fit ->
+diagnosis): every catalogue effect hidden in a paper sweep with one seed, and the clean bench with four.
 
-All 40 sessions are made once for the test session (conftest's ``bench_sessions``, together with the sweeps other
-test files read), two at a time; the bench's truth stays in the worker process that ran it. bench/diagnose.py
-prints the same matrix as a table.
+The suite's fast subset of issue 6's and 12's coverage: the whole tuning set (three seeds per effect, ten clean)
+and the validation set (bench/inject.py) are measured by ``python bench/diagnose.py`` (docs/diagnosis.md). The
+sessions are made once for the test session (conftest's ``bench_sessions``, shared with the fit tests' clean
+seeds 1-4 and the round trip's dehydration seed 1); the bench's truth stays in the worker process that ran it.
 """
 
 import json
@@ -11,15 +12,16 @@ import json
 import pytest
 
 from labrig.diagnose.catalogue import CATALOGUE
-from labrig.diagnose.coverage import confusion
+from bench.coverage import confusion
 from mock_devices import scenarios
 
 EFFECTS = sorted(CATALOGUE)
-CASES = [(n, s) for n in EFFECTS for s in (1, 2, 3)] + [("none", s) for s in range(1, 11)]
+CLEAN_SEEDS = (1, 2, 3, 4)
+CASES = [(n, 1) for n in EFFECTS] + [("none", s) for s in CLEAN_SEEDS]
 BENCH_CASES = CASES
-# Issue 6's targets: >= 95 % right overall, `none` in >= 95 % of the clean seeds, and the named extension at least
-# halves the held-out error. Measured with bench/diagnose.py (docs/diagnosis.md): 40/40, none 10/10, ratios <= 0.37.
-OVERALL, NONE, HALVED = 0.95, 0.95, 0.5
+# Targets as in bench/diagnose.py: every effect named, the clean bench `none`, and the named extension at least
+# halves the held-out error (measured on the whole tuning set: docs/diagnosis.md).
+HALVED = 0.5
 
 
 @pytest.fixture(scope="module")
@@ -27,18 +29,17 @@ def matrix(bench_sessions):
     return bench_sessions.get(CASES)
 
 
-def test_the_hidden_effect_is_named_in_most_sessions(matrix):
+def test_every_hidden_effect_is_named(matrix):
     table = confusion(matrix, scenarios.names())
-    right = sum(r.right for r in matrix)
-    assert right >= OVERALL * len(matrix), table
-    for name in EFFECTS:  # and no effect is missed in more than one seed of three
-        assert sum(r.right for r in matrix if r.scenario == name) >= 2, table
+    assert all(r.right for r in matrix if r.scenario != "none"), table
 
 
-def test_the_clean_bench_is_mostly_none_over_ten_seeds(matrix):
+def test_the_clean_bench_is_none(matrix):
     none = [r for r in matrix if r.scenario == "none"]
-    assert len(none) == 10
-    assert sum(r.verdict == "none" for r in none) >= NONE * len(none), [(r.seed, r.answer) for r in none]
+    assert len(none) == len(CLEAN_SEEDS)
+    assert all(r.verdict == "none" for r in none), [(r.seed, r.answer, r.output["residual"]["where"]) for r in none]
+    for r in none:  # and nothing is said to be left over
+        assert r.output["residual"]["where"] == [] or all(w["over_accuracy"] < 1.5 for w in r.output["residual"]["where"])
 
 
 def test_the_named_extension_at_least_halves_the_heldout_error(matrix):
@@ -56,7 +57,8 @@ def test_the_json_contract_holds_for_every_verdict(matrix):
         assert (out["cause"] is None) == (out["verdict"] != "effect")
         assert {c["name"] for c in out["candidates"]} == set(EFFECTS)
         assert all({"name", "delta_bic", "heldout_nrmse"} <= set(c) for c in out["candidates"])
-        assert "heldout_nrmse" in out["baseline"] and {"heldout_nrmse", "params"} <= set(out["extended"])
+        assert "heldout_nrmse" in out["baseline"] and {"heldout_nrmse", "params", "form"} <= set(out["extended"])
+        assert all({"block", "detail", "level"} <= set(w) for w in out["residual"]["where"])
         assert {"heldout_nrmse_ratio", "delta_bic"} <= set(out["gain"])
         json.dumps(out)
 

@@ -21,7 +21,9 @@ def summary(out: dict[str, Any]) -> None:
     elif v == "none":
         click.echo(f"verdict: none -- the baseline explains the data within noise (held-out NRMSE {out['baseline']['heldout_nrmse']:.4g})")
     else:
-        click.echo(f"verdict: unexplained -- structured residual (chi2/point {out['baseline']['chi2_per_point']:.2f}) that no catalogued extension removes")
+        click.echo("verdict: unexplained -- structured residual that no catalogued extension removes")
+    for w in out.get("residual", {}).get("where", []):
+        click.echo(f"  misfit in {w['block']}: level {w['level']:.3g} ({w['over_accuracy']:.2f} x its attainable accuracy), {w['detail']}")
     click.echo(f"{'candidate':20s} {'DeltaBIC':>10s} {'held-out NRMSE':>15s} {'ratio':>7s}")
     for c in out["candidates"]:
         click.echo(f"{c['name']:20s} {c['delta_bic']:10.1f} {c['heldout_nrmse']:15.4g} {c['heldout_ratio']:7.3f}")

@@ -37,7 +37,7 @@ class Context:
     area: float
     length: float
     base: "Prediction | None" = None  # accepted effects so far: extensions build on it (forward selection)
-    chain: list = field(default_factory=list)  # (name, theta) of those effects, to rebuild base on new mechanics
+    chain: list = field(default_factory=list)  # (extension, theta) of those effects, to rebuild base on new mechanics
     cache: dict = field(default_factory=dict)  # what an extension precomputes once per context (it depends on the specimens only)
 
 
@@ -74,6 +74,7 @@ class Extension:
     apply: Callable[[np.ndarray, Context], Prediction]
     describe: str = ""
     refit_mechanics: bool = False  # change the linear path's shape: fitted with alpha, gamma, K_t bar free
+    form: str = ""  # which form of the effect's family (labrig.diagnose.families)
 
 
 def _drive(s: SineFeature) -> complex:
@@ -350,3 +351,9 @@ CATALOGUE: dict[str, Extension] = {
         Extension("mains_pickup", ("disp50_um", "cur50_uA", "disp60_um", "cur60_uA"), (1.0, 1.0, 1.0, 1.0), (0.0,) * 4, (1e4,) * 4, _mains, "additive 50/60 Hz line of constant amplitude"),
     )
 }
+
+# the first form of each family: the one the simulated bench (the tuning set) was built with
+FIRST_FORMS = {"back_relaxation": "single", "faradaic_current": "odd_polynomial", "hysteresis": "play_drive", "time_delay": "delay",
+               "sensor_offset": "beam", "clamp_relaxation": "exponential_creep", "dehydration": "exponential", "strain_resistance": "gauge",
+               "large_deflection": "cubic", "mains_pickup": "lines"}
+CATALOGUE = {k: dataclasses.replace(e, form=FIRST_FORMS[k]) for k, e in CATALOGUE.items()}

@@ -18,9 +18,11 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
-from labrig.diagnose.catalogue import CATALOGUE, Context, Prediction, baseline
+from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
+from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for
 from labrig.diagnose.nuisance import Refit, refit
+from labrig.diagnose.verdict import STRUCTURE_MARGIN, structured, where as locate_misses
 from labrig.fit.session_data import SessionData
 from labrig.physics import transfer
 
@@ -33,12 +35,14 @@ LINE_SIGMA = 0.6
 # paper-sweep seeds (docs/diagnosis.md). The unit of the held-out error, and the level above which a block "misses".
 CLEAN_ACCURACY = {"frf_d": 0.35, "frf_i": 0.13, "harm_d": 1.7, "harm_i": 0.45, "force": 0.3, "step_d": 0.05, "step_i": 0.03, "line": 0.8}
 DBIC_EFFECT = -25.0  # evidence needed to name an effect
-RATIO_EFFECT = 0.95  # and predict held-out records 5 % better (clean benches reach 0.97-0.98 with the staged baseline)
+# and at least halve the held-out error: a cause removes most of what the baseline misses (the tuning set's named
+# extensions: ratios 0.004-0.39); one that removes less leaves structure it does not explain, and an extension that
+# only soaks up part of an uncatalogued misfit (the issue's probe: 0.85-0.90) must not be named for it
+RATIO_EFFECT = 0.5
 # a further effect, judged on top of those accepted, must predict the held-out half 20 % better: the residual left by
 # an adopted extension includes its own approximation error, which a flexible second one partly soaks up (single-effect
 # sessions gained 6-11 % from a spurious second back_relaxation or dehydration; real second effects gain far more)
 RATIO_FURTHER = 0.8
-CHI2_STRUCTURED = 4.0  # baseline chi2/dof above this with no explaining effect: "unexplained"
 
 
 def baseline_specimens(fit) -> dict:
@@ -86,15 +90,14 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
         sd = np.array([s.est.disp_noise for s in ctx.sines])
         si = np.array([s.est.cur_noise for s in ctx.sines])
         for key, pr, me, sg in (("frf_d", pred.Hd, Hd_m, sd), ("frf_i", pred.Hi, Hi_m, si)):
-            sig = np.sqrt(np.nan_to_num(sg, nan=0.0) ** 2 + (FRF_FLOOR * np.abs(me)) ** 2)
+            sig = _frf_sigma(me, sg)
             r = pr - me
             out[key] = (np.r_[r.real / sig, r.imag / sig], np.r_[r.real, r.imag] / np.r_[np.abs(me), np.abs(me)])
         for key, which, pr in (("harm_d", "d", pred.hd), ("harm_i", "i", pred.hi)):
             me = np.array([[s.harm(which, 2), s.harm(which, 3)] for s in ctx.sines])
             rel_noise = (sd / np.abs(Hd_m)) if which == "d" else (si / np.abs(Hi_m))
-            sig = np.sqrt(np.nan_to_num(rel_noise, nan=0.0)[:, None] ** 2 + HARM_FLOOR**2)
+            sig = np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1).ravel()
             r = (pr - me).ravel()
-            sig = np.repeat(sig, 2, axis=1).ravel()
             out[key] = (np.r_[r.real / sig, r.imag / sig], np.r_[r.real, r.imag] * 10)
         rel, sig = _force_rel(ctx)
         r = pred.force_rel - rel
@@ -104,7 +107,7 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
         w = math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))
         for key, pr, me, nz in (("step_d", pred.step_d[k], st.d, st.noise_d), ("step_i", pred.step_i[k], st.i, st.noise_i)):
             rms = float(np.sqrt(np.mean(me**2))) or 1.0
-            sig = math.sqrt(nz**2 + (STEP_FLOOR * rms) ** 2)
+            sig = _step_sigma(nz, rms)
             r = pr - me
             prev = out.get(key, (np.zeros(0), np.zeros(0)))
             out[key] = (np.r_[prev[0], r / sig / w], np.r_[prev[1], r / rms / w * 3])
@@ -122,6 +125,50 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
     return out
 
 
+def _frf_sigma(measured: np.ndarray, noise: np.ndarray) -> np.ndarray:
+    return np.sqrt(np.nan_to_num(noise, nan=0.0) ** 2 + (FRF_FLOOR * np.abs(measured)) ** 2)
+
+
+def _harm_sigma(rel_noise: np.ndarray) -> np.ndarray:
+    return np.sqrt(np.nan_to_num(rel_noise, nan=0.0) ** 2 + HARM_FLOOR**2)
+
+
+def _step_sigma(noise: float, rms: float) -> float:
+    return math.sqrt(noise**2 + (STEP_FLOOR * rms) ** 2)
+
+
+def noise_levels(ctx: Context) -> dict[str, float]:
+    """Per block, the RMS level a residual of the session's noise alone would reach in the block's units (noise in
+    quadrature with the model floor): near 1 where the session's own scatter dominates, small where the floor does.
+    From the data's repeats only: the cycle-to-cycle scatter of each sine record, each step's pre-step baseline,
+    the load cell's counts, a line's neighbouring bins."""
+    out: dict[str, float] = {}
+    rms = lambda x: float(np.sqrt(np.mean(np.square(x)))) if np.size(x) else 0.0  # noqa: E731
+    if ctx.sines:
+        for key, me, sg in (("frf_d", np.array([s.Hd for s in ctx.sines]), np.array([s.est.disp_noise for s in ctx.sines])),
+                            ("frf_i", np.array([s.Hi for s in ctx.sines]), np.array([s.est.cur_noise for s in ctx.sines]))):
+            n = np.nan_to_num(sg, nan=0.0)
+            out[key] = rms(n / _frf_sigma(me, sg))
+            rel = n / np.abs(me)
+            out["harm_" + key[-1]] = rms(np.nan_to_num(rel) / _harm_sigma(rel))
+        out["force"] = 1.0  # its unit is the indicator's counts alone
+    for key, attr in (("step_d", "d"), ("step_i", "i")):
+        lv = [getattr(st, f"noise_{attr}") / _step_sigma(getattr(st, f"noise_{attr}"), float(np.sqrt(np.mean(getattr(st, attr) ** 2))) or 1.0)
+              / math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0)) for st in ctx.steps]
+        if lv:
+            out[key] = rms(lv)
+    if ctx.lines:
+        out["line"] = 1.0  # in units of the neighbouring bins
+    return out
+
+
+def attainable_accuracy(ctx: Context) -> dict[str, float]:
+    """The level each block of the baseline can claim on this session: the prior measured on clean benches
+    (``CLEAN_ACCURACY``, the model's own floor) or what the session's own noise makes unavoidable, the larger."""
+    noise = noise_levels(ctx)
+    return {k: max(CLEAN_ACCURACY.get(k, 1.0), noise.get(k, 0.0)) for k in set(CLEAN_ACCURACY) | set(noise)}
+
+
 def chi2(bl: dict) -> tuple[float, int]:
     n = sum(v[0].size for v in bl.values())
     return float(sum(np.sum(v[0] ** 2) for v in bl.values())), n
@@ -132,24 +179,26 @@ def block_rms(bl: dict) -> dict[str, float]:
     return {k: float(np.sqrt(np.mean(v[0] ** 2))) for k, v in bl.items() if v[0].size}
 
 
-def missed(rms: dict[str, float]) -> set[str]:
-    """The blocks where a prediction misses by more than the baseline's accuracy on clean benches."""
-    return {k for k, r in rms.items() if r > CLEAN_ACCURACY.get(k, 1.0)}
+def missed(rms: dict[str, float], accuracy: dict[str, float] | None = None) -> set[str]:
+    """The blocks where a prediction misses by more than the baseline's attainable accuracy."""
+    accuracy = accuracy or CLEAN_ACCURACY
+    return {k for k, r in rms.items() if r > accuracy.get(k, 1.0)}
 
 
-def heldout_error(rms: dict[str, float], where: set[str] | None = None) -> float:
+def heldout_error(rms: dict[str, float], where: set[str] | None = None, accuracy: dict[str, float] | None = None) -> float:
     """Held-out error: the RMS over the blocks ``where`` (those the baseline misses; all blocks if it misses
     none) of each block's RMS residual in units of the baseline's clean accuracy, floored at 1. 1 is as good
     as the model gets on a clean bench; blocks of different size weigh alike; a block already within its clean
     accuracy cannot be improved (fitting its noise is no gain)."""
+    accuracy = accuracy or CLEAN_ACCURACY
     keys = [k for k in rms if not where or k in where]
-    per = [max(rms[k] / CLEAN_ACCURACY.get(k, 1.0), 1.0) for k in keys]
+    per = [max(rms[k] / accuracy.get(k, 1.0), 1.0) for k in keys]
     return float(np.sqrt(np.mean(np.square(per)))) if per else float("nan")
 
 
-def nrmse(bl: dict, where: set[str] | None = None) -> float:
+def nrmse(bl: dict, where: set[str] | None = None, accuracy: dict[str, float] | None = None) -> float:
     """``heldout_error`` of a block set (``blocks`` output)."""
-    return heldout_error(block_rms(bl), where)
+    return heldout_error(block_rms(bl), where, accuracy)
 
 
 @dataclass
@@ -162,21 +211,32 @@ class Candidate:
     chi2_fit: float
     ratio_vs_reference: float = float("nan")  # against the baseline refitted the same way (what decides)
     refit: Refit | None = None
+    held: dict | None = None  # its held-out blocks (``blocks`` output): what structure it leaves
+    ext: Extension | None = None  # the form of the effect's family it was fitted in
+
+    @property
+    def form(self) -> str:
+        return self.ext.form if self.ext else ""
 
 
 def _starts(name: str, ext) -> list[np.ndarray]:
     starts = [np.array(ext.x0, float)]
     if name == "back_relaxation":
-        starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0])]
+        starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0]), np.array([0.8, 2.0, 0.6]), np.array([0.8, 30.0, 0.6])]
     if name == "time_delay":
         starts += [np.array([0.02]), np.array([-0.02])]
     if name == "sensor_offset":
         starts += [np.array([0.6])]
-    return starts
+    if name == "faradaic_current":
+        starts += [np.array([3e-4, 0.1, 0.9]), np.array([3e-4, 0.1, 0.1])]
+    if name == "hysteresis":
+        starts += [np.array([0.5, 300.0])]
+    lo, hi = np.array(ext.lo), np.array(ext.hi)
+    return [x for x in starts if x.size == len(ext.params) and np.all(x >= lo) and np.all(x <= hi)]
 
 
-def _fit_extension(name: str, ctx: Context) -> tuple[np.ndarray, float]:
-    ext = CATALOGUE[name]
+def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tuple[np.ndarray, float]:
+    ext = ext or CATALOGUE[name]
 
     def res(th: np.ndarray) -> np.ndarray:
         bl = blocks(ext.apply(th, ctx), ctx)
@@ -200,8 +260,9 @@ class _Scorer:
     def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_held: dict, refit_mechanics: bool):
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
         rms = block_rms(base_held)
-        self.where = missed(rms)  # where the base misses the held-out records: the error is measured there
-        self.base_heldout = heldout_error(rms, self.where)
+        self.accuracy = attainable_accuracy(ctx_held)
+        self.where = missed(rms, self.accuracy)  # where the base misses the held-out records: the error is measured there
+        self.base_heldout = heldout_error(rms, self.where, self.accuracy)
         self.refit_mechanics = refit_mechanics  # first round only: later rounds keep the accepted mechanics
         self._ref: tuple[float, float] | None = None
 
@@ -210,24 +271,29 @@ class _Scorer:
         if self._ref is None:
             r = refit(None, self.ctx_fit, self.ctx_held, blocks, [])
             c_ref = chi2(blocks(baseline(r.ctx_fit), r.ctx_fit))[0]
-            self._ref = (c_ref, nrmse(blocks(baseline(r.ctx_held), r.ctx_held), self.where))
+            self._ref = (c_ref, nrmse(blocks(baseline(r.ctx_held), r.ctx_held), self.where, self.accuracy))
         return self._ref
 
     def score(self, name: str) -> Candidate:
-        ext = CATALOGUE[name]
+        """The effect in the form of its family with the best evidence on the fitted half."""
+        return min((self.score_form(name, ext) for ext in FAMILIES[name]), key=lambda c: c.delta_bic)
+
+    def score_form(self, name: str, ext: Extension) -> Candidate:
         if not (ext.refit_mechanics and self.refit_mechanics):
-            th, c = _fit_extension(name, self.ctx_fit)
-            h = nrmse(blocks(ext.apply(th, self.ctx_held), self.ctx_held), self.where)
+            th, c = _fit_extension(name, self.ctx_fit, ext)
+            held = blocks(ext.apply(th, self.ctx_held), self.ctx_held)
+            h = nrmse(held, self.where, self.accuracy)
             ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
             dbic = c - self.c0 + len(th) * math.log(max(self.n, 2))
-            return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio)
+            return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio, held=held, ext=ext)
         r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext))
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]
-        h = nrmse(blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held), self.where)
+        held = blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held)
+        h = nrmse(held, self.where, self.accuracy)
         c_ref, h_ref = self.reference()
         params = {**dict(zip(ext.params, map(float, r.theta))), **r.params()}
         ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-        return Candidate(name, params, c - c_ref + len(r.theta) * math.log(max(self.n, 2)), h, ratio, c, h / h_ref if h_ref > 0 else float("nan"), r)
+        return Candidate(name, params, c - c_ref + len(r.theta) * math.log(max(self.n, 2)), h, ratio, c, h / h_ref if h_ref > 0 else float("nan"), r, held, ext)
 
 
 def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_held: dict,
@@ -250,13 +316,13 @@ def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, 
     same = ctx_held is ctx_fit
     ctx_fit = dataclasses.replace(ctx_fit)  # shallow copies: the callers' contexts keep their base
     ctx_held = ctx_fit if same else dataclasses.replace(ctx_held)
-    ext = CATALOGUE[c.name]
+    ext = c.ext or CATALOGUE[c.name]
     th = np.array([c.params[p] for p in ext.params])
     pf = ext.apply(th, ctx_fit)
     ph = pf if same else ext.apply(th, ctx_held)  # both on the current base, then adopt
-    ctx_fit.base, ctx_fit.chain = pf, [*ctx_fit.chain, (c.name, th)]
+    ctx_fit.base, ctx_fit.chain = pf, [*ctx_fit.chain, (ext, th)]
     if not same:
-        ctx_held.base, ctx_held.chain = ph, [*ctx_held.chain, (c.name, th)]
+        ctx_held.base, ctx_held.chain = ph, [*ctx_held.chain, (ext, th)]
     return ctx_fit, ctx_held
 
 
@@ -279,18 +345,23 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     b_held = blocks(baseline(ctx_held), ctx_held)
     c0, n = chi2(b_fit)
     held_rms = block_rms(b_held)
-    where = missed(held_rms)
-    base_heldout = heldout_error(held_rms, where)
+    accuracy = attainable_accuracy(ctx_held)  # the prior, or the session's own noise where that is larger
+    where = missed(held_rms, accuracy)
+    base_heldout = heldout_error(held_rms, where, accuracy)
     cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, b_held, refit_mechanics=True)
     named = _significant(cands)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain
     accepted = list(named[:1])
     cf, ch = ctx_fit, ctx_held
+    adopted = 0
     while accepted and len(accepted) < 3:
         cf, ch = _adopt(accepted[-1], cf, ch)
+        adopted += 1
         c1, _ = chi2(blocks(baseline(cf), cf))
         h1 = blocks(baseline(ch), ch)
+        if not missed(block_rms(h1), accuracy):
+            break  # nothing left beyond the accuracy: no further effect can gain (each block's error floors at 1)
         # the mechanics were refitted in the first round (with the first effect, or not at all): later effects
         # are judged on those, which keeps a second round to the extensions' own parameters
         rest = _significant(_score(cf, ch, [c.name for c in cands if c.name not in {a.name for a in accepted}], c1, n, h1), RATIO_FURTHER)
@@ -299,14 +370,23 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         accepted.append(rest[0])
     c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
     dof_chi2 = c_all / max(n_all, 1)
+    structure = structured(held_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
     if named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0
         confidence = float(min(1.0, (second - named[0].heldout_ratio) / max(1.0 - named[0].heldout_ratio, 1e-9)))
-    elif dof_chi2 > CHI2_STRUCTURED:
-        verdict, cause, confidence = "unexplained", None, float(1.0 - 1.0 / dof_chi2)
+    elif structure:
+        # structure no catalogued extension removes: confidence grows with how far the worst block sits beyond
+        verdict, cause = "unexplained", None
+        confidence = float(1.0 - STRUCTURE_MARGIN / max(structure.values()))
     else:
-        verdict, cause, confidence = "none", None, float(min(1.0, 1.0 / max(dof_chi2, 1e-9)) if dof_chi2 > 1 else 1.0)
+        verdict, cause = "none", None
+        worst = max((held_rms[k] / accuracy[k] for k in held_rms), default=0.0)
+        confidence = float(min(1.0, 1.0 - (worst - 1.0) / (STRUCTURE_MARGIN - 1.0))) if worst > 1.0 else 1.0
+    # where the remaining misfit sits: the baseline's, or what the accepted effects leave on the held-out half
+    if accepted and adopted < len(accepted):
+        cf, ch = _adopt(accepted[-1], cf, ch)
+    residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(b_held, ctx_held, accuracy)
     best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
     return {
         "verdict": verdict,
@@ -314,14 +394,19 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         "confidence": confidence,
         "effects": [c.name for c in accepted],
         # each accepted effect as it was judged: the first against the baseline, the others on top of those before
-        "effects_detail": [{"name": c.name, "params": c.params, "delta_bic": c.delta_bic, "heldout_ratio": c.heldout_ratio} for c in accepted],
+        "effects_detail": [{"name": c.name, "form": c.form, "params": c.params, "delta_bic": c.delta_bic, "heldout_ratio": c.heldout_ratio} for c in accepted],
         "candidates": [
-            {"name": c.name, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
+            {"name": c.name, "form": c.form, "delta_bic": c.delta_bic, "heldout_nrmse": c.heldout_nrmse, "heldout_ratio": c.heldout_ratio, "params": c.params}
             for c in cands
         ],
         "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": held_rms, "missed": sorted(where),
-                     "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY}},
-        "extended": {"name": best.name, "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+                     "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY},
+                     "accuracy": {k: accuracy[k] for k in held_rms}, "noise_level": noise_levels(ctx_held)},
+        "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
+                     "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+        "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
+                     "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
+                             "structure_margin x its attainable accuracy is structure"},
         "gain": {"heldout_nrmse_ratio": best.heldout_ratio, "delta_bic": best.delta_bic},
         "split": {"fit": sorted(p for p in fit_set if p is not None), "heldout": sorted(p for p in held_set if p is not None), "same_records": same},
         "elapsed_s": time.perf_counter() - t0,

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import least_squares
 
-from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline, frf_by_pressure
+from labrig.diagnose.catalogue import Context, Extension, Prediction, baseline, frf_by_pressure
 from labrig.diagnose.features import predict_step, specimen_for
 
 NUISANCE_BLOCKS = ("frf_d", "harm_d")  # what alpha, gamma and K_t bar can change
@@ -59,8 +59,8 @@ def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dic
         new.step_d = [predict_step(specimen_for(specimens, st.pressure_kPa), st)[0] for st in ctx.steps]
     else:
         new.steps, new.step_d, new.step_i = [], [], []
-    for name, th in ctx.chain:
-        new.base = CATALOGUE[name].apply(th, new)
+    for ext, th in ctx.chain:
+        new.base = ext.apply(th, new)
     return new
 
 

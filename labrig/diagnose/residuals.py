@@ -15,8 +15,10 @@ import numpy as np
 
 from labrig.diagnose import engine
 from labrig.diagnose.catalogue import CATALOGUE, Context, baseline
+from labrig.diagnose.families import form
 from labrig.diagnose.features import Features, extract
 from labrig.diagnose.nuisance import with_fitted_mechanics
+from labrig.diagnose.verdict import abscissa
 from labrig.fit.session_data import SessionData
 
 BLOCK_TITLES = {
@@ -70,14 +72,15 @@ class HeldoutResiduals:
     same_records: bool  # one pressure only: fitted and held-out records are the same
     blocks: list[BlockResiduals]
     missed: set[str] = field(default_factory=set)  # the blocks the baseline misses: where the held-out error is measured
+    accuracy: dict[str, float] | None = None  # the baseline's attainable accuracy per block on this session
 
     @property
     def nrmse_before(self) -> float:
-        return engine.heldout_error({b.name: b.rms_before for b in self.blocks}, self.missed)
+        return engine.heldout_error({b.name: b.rms_before for b in self.blocks}, self.missed, self.accuracy)
 
     @property
     def nrmse_after(self) -> float:
-        return engine.heldout_error({b.name: b.rms_after for b in self.blocks}, self.missed)
+        return engine.heldout_error({b.name: b.rms_after for b in self.blocks}, self.missed, self.accuracy)
 
     def evidence(self, most: int = 2) -> list[BlockResiduals]:
         """The blocks the extension fixes most: those within half of the largest improvement, best first."""
@@ -89,39 +92,6 @@ class HeldoutResiduals:
 
 def _rms(x: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.square(x)))) if x.size else float("nan")
-
-
-def _abscissa(name: str, ctx: Context, size: int) -> tuple[np.ndarray, str, bool, np.ndarray]:
-    """Where each residual of a block sits: frequency for sine blocks, time for steps, else its index.
-
-    Follows the layout of ``engine.blocks`` (real parts then imaginary parts); when a block's size does not
-    match that layout (the engine changed) it falls back to the index rather than mislabelling points."""
-    f = np.array([s.f for s in ctx.sines])
-    x, x_label, log = f, "drive frequency (Hz)", True
-    amp = np.array([s.amplitude_V for s in ctx.sines])
-    if f.size > 1 and np.ptp(f) == 0 and np.ptp(amp) > 0:  # an amplitude series: one frequency, several drives
-        x, x_label, log = amp, "drive amplitude (V)", False
-    if name in ("frf_d", "frf_i") and size == 2 * f.size:
-        return np.tile(x, 2), x_label, log, np.repeat(np.array(["Re", "Im"], dtype=object), f.size)
-    if name in ("harm_d", "harm_i") and size == 4 * f.size:
-        series = np.array([f"{k} {part}" for part in ("Re", "Im") for _ in f for k in ("2f", "3f")], dtype=object)
-        return np.tile(np.repeat(x, 2), 2), x_label, log, series
-    if name == "force" and size == f.size:
-        return np.arange(size, dtype=float), "sine record (in order)", False, np.full(size, "", dtype=object)
-    if name in ("step_d", "step_i") and size == sum(st.t.size for st in ctx.steps):
-        x = np.concatenate([st.t - st.t[0] for st in ctx.steps]) if ctx.steps else np.zeros(0)
-        lab = np.concatenate([np.full(st.t.size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x
-        return x, "time from record start (s)", False, lab
-    if name == "line":
-        series = np.array([f"{'displacement' if ch == 'd' else 'current'} {hz:g} Hz" for line in ctx.lines
-                           for (ch, hz), fl in line.floor.items() if np.isfinite(fl) and fl > 0], dtype=object)
-        if series.size == size:  # the engine skips components without a finite noise floor
-            return np.arange(size, dtype=float), "line component (record by record)", False, series
-    return np.arange(size, dtype=float), "feature index", False, np.full(size, "", dtype=object)
-
-
-def _pressure_label(p: float | None) -> str:
-    return "no pressure" if p is None else f"{p:g} kPa"
 
 
 def heldout_context(sd: SessionData, specimens: dict, feats: Features | None = None) -> tuple[Context, set, bool]:
@@ -139,9 +109,10 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
     name = ext_info.get("name") or result.get("cause")
     if not name or name not in CATALOGUE or not result.get("baseline", {}).get("blocks"):
         return None
-    ext = CATALOGUE[name]
+    ext = form(name, ext_info.get("form"))
     theta = np.array([float(ext_info["params"][p]) for p in ext.params])
     ctx, held, same = heldout_context(sd, specimens, feats)
+    accuracy = engine.attainable_accuracy(ctx)
     before = engine.blocks(baseline(ctx), ctx)
     after_ctx = with_fitted_mechanics(ctx, ext_info["params"])  # refitted extensions carry their mechanics
     after = engine.blocks(ext.apply(theta, after_ctx), after_ctx)
@@ -150,7 +121,7 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
         a = after.get(key, (np.full(b.shape, np.nan), None))[0]
         if not b.size or a.shape != b.shape:
             continue
-        x, label, log, series = _abscissa(key, ctx, b.size)
+        x, label, log, series = abscissa(key, ctx, b.size)
         out.append(BlockResiduals(key, b, a, x, label, log, series))
     return HeldoutResiduals(name, dict(ext_info["params"]), bool(ext_info.get("accepted", result.get("cause") == name)),
-                            sorted(p for p in held if p is not None), same, out, engine.missed({b.name: b.rms_before for b in out}))
+                            sorted(p for p in held if p is not None), same, out, engine.missed({b.name: b.rms_before for b in out}, accuracy), accuracy)

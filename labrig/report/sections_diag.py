@@ -50,8 +50,12 @@ def _verdict(d: dict) -> str:
         text = (f"Verdict: none: the baseline explains the data within noise (held-out NRMSE "
                 f"{h.fmt(d['baseline'].get('heldout_nrmse'), 4)}).")
     else:
-        text = (f"Verdict: unexplained: structured residual (chi-square per point {h.fmt(d['baseline'].get('chi2_per_point'), 3)}) "
-                "that no catalogued extension removes.")
+        text = "Verdict: unexplained: structured residual that no catalogued extension removes."
+    if d.get("extended", {}).get("form") and v == "effect":
+        text += f" Form found: {d['extended']['form']}."
+    where = (d.get("residual") or {}).get("where") or []
+    if where:  # where the misfit the verdict leaves sits (issue 12): block, band, harmonic order or record time
+        text += " Misfit left: " + "; ".join(f"{w['block']} at {h.fmt(w['over_accuracy'], 2)} x its accuracy, {w['detail']}" for w in where) + "."
     cause = h.esc(d.get("cause") or "")
     return f'<p class="verdict" data-verdict="{h.esc(v)}" data-cause="{cause}">{h.esc(text)}</p>'
 

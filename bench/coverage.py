@@ -39,23 +39,32 @@ class CaseResult:
         return self.answer == self.scenario
 
 
-def run_case(args: tuple[str, int, str, str]) -> CaseResult:
-    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
+def make_session(args: tuple[str, int, str, str]) -> Path:
+    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder`` (a finished run kept there is reused)."""
     name, seed, folder, protocol = args
-    from labrig.analysis import load_and_fit, run_diagnosis
-    from labrig.jsonable import jsonable
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
 
+    done = Path(folder) / f"{name.replace('+', '_')}_{seed}.h5"
+    if done.exists():
+        return done
     for attempt in range(2):
         # the simulated bench runs on a wall-scaled clock: on an overloaded machine its clamp servo can miss a
         # 180 s (simulated) timeout; such a run is a fault of the bench, not data, and is run once more
         path = Path(folder) / f"{name.replace('+', '_')}_{seed}_{attempt}.h5"
         res = execute(RunRequest(protocol, path, effects=scenarios.effects_for(name, seed), seed=seed))
         if res.exit_code == 0:
-            break
-    else:
-        raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
+            return path.rename(done)
+    raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
+
+
+def run_case(args: tuple[str, int, str, str]) -> CaseResult:
+    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
+    name, seed = args[0], args[1]
+    from labrig.analysis import load_and_fit, run_diagnosis
+    from labrig.jsonable import jsonable
+
+    path = make_session(args)
     t0 = time.perf_counter()
     fitted = load_and_fit(path, "diagnose")
     out = run_diagnosis(path, fitted)
@@ -63,11 +72,12 @@ def run_case(args: tuple[str, int, str, str]) -> CaseResult:
                       float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path), jsonable(fitted[1].to_json()))
 
 
-def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2) -> list[CaseResult]:
-    """Every (scenario, seed) case, ``jobs`` at a time in fresh processes (spawned: no Qt or threads inherited)."""
+def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2, make_only: bool = False) -> list:
+    """Every (scenario, seed) case, ``jobs`` at a time in fresh processes (spawned: no Qt or threads inherited):
+    run, fitted and diagnosed (``CaseResult``), or with ``make_only`` only run (the session paths)."""
     ctx = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(jobs, mp_context=ctx) as pool:
-        return list(pool.map(run_case, [(n, s, str(folder), protocol) for n, s in cases]))
+        return list(pool.map(make_session if make_only else run_case, [(n, s, str(folder), protocol) for n, s in cases]))
 
 
 class CaseCache:
@@ -93,7 +103,7 @@ def confusion(results: list[CaseResult], names: list[str]) -> str:
     labels = names + ["unexplained"]
     head = 'hidden \\ diagnosed'
     lines = [f"{head:20s}" + "".join(f"{lab[:7]:>8s}" for lab in labels)]
-    for n in names:
+    for n in labels:  # a structure outside the catalogue is hidden as "unexplained" (bench/inject.py)
         row = [sum(1 for r in results if r.scenario == n and r.answer == lab) for lab in labels]
         if sum(row):
             lines.append(f"{n:20s}" + "".join(f"{c:8d}" for c in row))
