@@ -26,6 +26,7 @@ import numpy as np
 from drivers.clamp import MotorClamp, OperatorClamp
 from drivers.daq import DaqRig
 from drivers.errors import ReplayMismatch
+from drivers import analyser_models
 from drivers.analysers import open_analyser
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
@@ -214,6 +215,8 @@ def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
 def replay_rig(reader: SessionReader) -> ReplayRig:
     """A Rig whose drivers answer from the session's transcripts (instrument settings from its rig config)."""
     data = {k: v for k, v in reader.rig.items() if k in ("clock", "sample", "safety", "instruments")}
+    # sessions recorded before rig files named the analyser ran on labrig's older simulated analyser
+    data.get("instruments", {}).get("impedance", {}).setdefault("model", analyser_models.LEGACY_MODEL)
     cfg = parse_rig(data, f"{reader.path} (rig as recorded)")
     tr = {dev: with_rows(Transcript.loads(reader.transcript(dev)), reader) for dev in ("daq", "impedance", "keyence", "loadcell", "clamp")}
     ins = cfg.instruments

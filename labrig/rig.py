@@ -10,8 +10,8 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [instruments.keyence]   address (pyserial URL or device path), dialect
     [instruments.loadcell]  address
     [instruments.clamp]     mode = "motor" (address) or "operator"
-    [instruments.impedance] address (VISA resource name), model ("IM3590", "E4990A"; none = "SIM-WIDE",
-                            the analyser of labrig's older simulator: drivers/analyser_models.py)
+    [instruments.impedance] address (VISA resource name), model ("IM3590", "E4990A" or "SIM-WIDE", the analyser of
+                            labrig's older simulator; required: drivers/analyser_models.py)
     [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
                             channels, current_gain_A_per_V, displacement_m_per_V, watchdog_s (rig seconds
                             without a reset from the host before the DAQ puts 0 V on the drive by itself)
@@ -99,7 +99,8 @@ class ClampCfg(_Strict):
 
 class ImpedanceCfg(_Strict):
     address: VisaResource
-    model: Literal[tuple(analyser_models.MODELS)] = analyser_models.LEGACY_MODEL  # type: ignore[valid-type]
+    # required: the model sets the range a plan is checked against before anything moves (an E4990A stops at 20 Hz)
+    model: Literal[tuple(analyser_models.MODELS)]  # type: ignore[valid-type]
 
 
 class DaqCfg(_Strict):

@@ -342,7 +342,7 @@ RIG_BASE: dict[str, Any] = {
         "keyence": {"address": f"socket://{DEAD}", "dialect": "LK-G"},
         "loadcell": {"address": f"socket://{DEAD}"},
         "clamp": {"mode": "operator"},
-        "impedance": {"address": "TCPIP::127.0.0.1::9::SOCKET"},
+        "impedance": {"address": "TCPIP::127.0.0.1::9::SOCKET", "model": "IM3590"},
         "daq": {"address": DEAD, "device": "Dev1", "current_gain_A_per_V": 1e-3, "displacement_m_per_V": 1e-3},
     },
 }

@@ -107,7 +107,7 @@ def test_bad_run_input_exit_2_one_line(tmp_path, args, word):
 def test_bad_rig_file_names_the_field(tmp_path):
     rig = tmp_path / "rig.toml"
     rig.write_text('[instruments.keyence]\naddress = "socket://127.0.0.1:1"\n[instruments.loadcell]\naddress = "x"\n'
-                   '[instruments.impedance]\naddress = "TCPIP::127.0.0.1::1::SOCKET"\n[instruments.daq]\naddres = "z"\n')
+                   '[instruments.impedance]\naddress = "TCPIP::127.0.0.1::1::SOCKET"\nmodel = "IM3590"\n[instruments.daq]\naddres = "z"\n')
     r = run("run", "step", "--rig", str(rig), "--out", str(tmp_path / "s.h5"))
     assert r.returncode == 2 and "instruments.daq.addres: unknown field" in r.stderr
 

@@ -144,7 +144,7 @@ def test_a_bad_watchdog_timeout_in_the_rig_file_is_refused(value: object) -> Non
     from labrig.rig import parse_rig
 
     data = {"instruments": {"keyence": {"address": "socket://127.0.0.1:1"}, "loadcell": {"address": "x"},
-                            "impedance": {"address": "TCPIP::127.0.0.1::1::SOCKET"},
+                            "impedance": {"address": "TCPIP::127.0.0.1::1::SOCKET", "model": "IM3590"},
                             "daq": {"address": "z", "watchdog_s": float(value) if value == "nan" else value}}}
     with pytest.raises(BadInput, match="instruments.daq.watchdog_s"):
         parse_rig(data, "rig.toml")

@@ -152,3 +152,17 @@ def test_lab_instruments_im3590_client_sequence(sim, bench, rm):
     finally:
         res.close()
     assert sim.server.undefined == []
+
+
+def test_a_rig_file_must_name_its_analyser_model():
+    """The model sets the range every plan is checked against: a real bench's rig file without it would let a
+    protocol ask an E4990A for 0.1 Hz. Refused with one line naming the field (recorded sessions replay as SIM-WIDE)."""
+    from labrig.errors import BadInput
+    from labrig.rig import parse_rig
+
+    data = {"instruments": {"keyence": {"address": "socket://127.0.0.1:1"}, "loadcell": {"address": "x"},
+                            "impedance": {"address": "TCPIP::127.0.0.1::1::SOCKET"}, "daq": {}}}
+    with pytest.raises(BadInput, match="instruments.impedance.model"):
+        parse_rig(data, "rig.toml")
+    data["instruments"]["impedance"]["model"] = "E4990A"
+    assert parse_rig(data, "rig.toml").instruments.impedance.model == "E4990A"

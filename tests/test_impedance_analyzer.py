@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import logging
 import socket
 import subprocess
 import sys
@@ -392,6 +393,9 @@ def test_e4990a_scpi_rules_and_common_commands(e4990a: ImpedanceAnalyzerSim, rm:
     keep their path, *OPT?; and a query it does not implement leaves -113 and is named in the log."""
     from _exchanges import Exchanges, visa_asker
 
+    # another library's logging set-up (dask's dictConfig) may have disabled loggers that existed when it ran
+    logging.getLogger("mock_devices.scpi_server").disabled = False
+    caplog.set_level(logging.WARNING, logger="mock_devices.scpi_server")
     res = rm.open_resource(e4990a.resource_name, read_termination="\n", write_termination="\n", timeout=2000)
     try:
         Exchanges([

@@ -6,7 +6,7 @@ from labrig.errors import BadInput
 from labrig.rig import Rig, parse_rig
 
 INSTRUMENTS = {"keyence": {"address": "socket://127.0.0.1:1"}, "loadcell": {"address": "socket://127.0.0.1:2"},
-               "impedance": {"address": "TCPIP::127.0.0.1::3::SOCKET"}, "daq": {}}
+               "impedance": {"address": "TCPIP::127.0.0.1::3::SOCKET", "model": "IM3590"}, "daq": {}}
 STRIP = {"name": "strip-C2", "length_m": 0.04, "width_m": 0.01, "thickness_m": 0.0002, "clamp_area_m2": 2e-5,
          "medium": "air", "batch": "B"}
 
