@@ -55,3 +55,13 @@ def pytest_unconfigure(config: pytest.Config) -> None:
         sys.stdout.flush()
         sys.stderr.flush()
         os._exit(_status["code"])
+
+
+@pytest.fixture
+def rm():
+    """A pyvisa-py resource manager (TCP VISA to the simulated analysers), closed after the test."""
+    import pyvisa
+
+    manager = pyvisa.ResourceManager("@py")
+    yield manager
+    manager.close()

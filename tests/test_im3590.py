@@ -7,7 +7,6 @@ import time
 
 import numpy as np
 import pytest
-import pyvisa
 
 from drivers import analyser_models
 from drivers.analysers import open_analyser
@@ -41,13 +40,6 @@ def bench():
 def sim(bench):
     with Im3590Sim(bench) as s:
         yield s
-
-
-@pytest.fixture
-def rm():
-    manager = pyvisa.ResourceManager("@py")
-    yield manager
-    manager.close()
 
 
 @pytest.fixture

@@ -55,13 +55,6 @@ def sim(bench: RCBench):
 
 
 @pytest.fixture
-def rm():
-    manager = pyvisa.ResourceManager("@py")
-    yield manager
-    manager.close()
-
-
-@pytest.fixture
 def an(sim: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager):
     driver = ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=0.5)
     yield driver
