@@ -54,3 +54,23 @@ def visa_asker(resource):
         return None
 
     return ask
+
+
+def assert_dropped_link_shows_at_once(an, sim, after_s: float) -> None:
+    """A one-point millihertz measurement (3000 s simulated = 3 s wall at 1000x) whose link drops ``after_s`` wall
+    seconds in: the driver raises ``Disconnected`` well before the point would have finished."""
+    import threading
+    import time
+
+    import pytest
+
+    from drivers.errors import Disconnected
+
+    an.configure_list([1e-3], ac_V=0.01)
+    timer = threading.Timer(after_s, sim.inject, args=("disconnect",))
+    timer.start()
+    t0 = time.monotonic()
+    with pytest.raises(Disconnected):
+        an.measure()
+    timer.join()
+    assert time.monotonic() - t0 < 1.5

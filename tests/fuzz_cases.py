@@ -455,7 +455,6 @@ def manifest_cases(rng: random.Random, n: int) -> list[Case]:
                 what, v = out_of_range(SPECIMEN_ORACLE[key], rng)
             m["specimen"][key] = v
             name = f"specimen {key} = {what}"
-            cases_family = "sample"
         elif r < 0.72:
             target = rng.choice(["/etc/passwd", "/proc/self/environ", "/dev/zero", "../secret.csv", "../../../../../etc/hostname",
                                  "link.csv", "fifo.csv", "adir", "nonexistent.csv", "/dev/stdin"])

@@ -1,7 +1,6 @@
 """Cross-instrument consistency on the simulated bench: every instrument sees the same strip."""
 
 import numpy as np
-import pytest
 
 from labrig import signals
 from labrig.physics import presets, timeresp, transfer

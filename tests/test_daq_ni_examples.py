@@ -17,7 +17,6 @@ package and gRPC:
 from __future__ import annotations
 
 import threading
-import time
 from typing import Iterator
 
 import grpc

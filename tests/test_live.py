@@ -5,7 +5,6 @@ from __future__ import annotations
 import gzip
 import os
 import sys
-import threading
 import time
 from contextlib import contextmanager
 from pathlib import Path

@@ -5,7 +5,6 @@ import time
 import numpy as np
 import pytest
 
-from drivers.errors import InstrumentError
 from labrig.errors import BadInput
 from labrig.events import Block, RunStart, RunStop, StepEnd, StepStart
 from labrig.runner import Runner
