@@ -9,7 +9,7 @@ from typing import Iterator
 
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
-from labrig.rig import Rig, open_rig, parse_rig
+from labrig.rig import Rig, kinds, open_rig, parse_rig
 from mock_devices.simbench import SimulatedInstruments
 from mock_devices.world import Bench, Effect
 
@@ -17,10 +17,13 @@ from labrig.clock import SIM_TIME_SCALE as DEFAULT_TIME_SCALE
 
 
 def rig_file_data(sims: SimulatedInstruments, clock: ScaledClock, preset: str, safety: dict | None = None) -> dict:
+    """The rig file of the simulated bench: its clock, its preset and the simulators' tables (in ``kinds()`` order;
+    a simulator of a kind labrig does not know keeps its table, which the rig file's check then names)."""
+    tables = sims.rig_tables()
     data = {
         "clock": {"time_scale": clock.time_scale, "epoch_wall": clock.epoch_wall},
         "sample": {"preset": preset},
-        "instruments": sims.rig_tables(),
+        "instruments": {**{k: tables.pop(k) for k in kinds() if k in tables}, **tables},
     }
     if safety:
         data["safety"] = dict(safety)

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import SimDevice
+from mock_devices.serial_server import SimDevice, serve
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
 class ClampSim(SimDevice):
@@ -33,3 +34,10 @@ class ClampSim(SimDevice):
             self.bench.set_clamp_force(f)
             return b"OK\r"
         return f"ER,{text[:2]},01\r".encode()
+
+
+@stands_in("clamp")
+def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+    sim = ClampSim(world, seed=opts.seed + 2)
+    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
+    return Served(sim, {"mode": "motor", "address": srv.address}, srv.stop)

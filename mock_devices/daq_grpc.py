@@ -36,6 +36,7 @@ from mock_devices.bench_api import BenchView
 from mock_devices.daq_attributes import getters, setters
 from mock_devices.daq_errors import ERR_MESSAGES, DaqmxError
 from mock_devices.daq_sim import RISING, SimDevice
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
 FAULTS = ("disconnect", "timeout", "overflow", "error")
@@ -335,6 +336,21 @@ class SimDaq:
 
     def __exit__(self, *exc: object) -> None:
         self.stop()
+
+
+# the bench's analog scaling: 10 mA/V current amplifier, laser analog 2 mm/V (+-20 mm on +-10 V)
+CURRENT_GAIN_A_PER_V = 1e-2
+DISPLACEMENT_M_PER_V = 2e-3
+
+
+@stands_in("daq")
+def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+    sim = SimDaq(world, current_gain_A_per_V=CURRENT_GAIN_A_PER_V, displacement_m_per_V=DISPLACEMENT_M_PER_V,
+                 seed=opts.seed + 3).start()
+    table = {"address": sim.address, "device": sim.device.name, "drive_channel": "ao0", "voltage_channel": "ai0",
+             "current_channel": "ai1", "displacement_channel": "ai2",
+             "current_gain_A_per_V": CURRENT_GAIN_A_PER_V, "displacement_m_per_V": DISPLACEMENT_M_PER_V}
+    return Served(sim, table, sim.stop)
 
 
 class StandInBench:

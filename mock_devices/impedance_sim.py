@@ -33,7 +33,9 @@ import numpy as np
 from drivers import analyser_models
 from mock_devices.analyser_sim import FAULTS, GARBAGE, OVERLOAD, ScpiAnalyserSim, num, one_arg, word
 from mock_devices.bench_api import BenchView
+from mock_devices.im3590_sim import Im3590Sim
 from mock_devices.scpi_server import Request, ScpiError, parse_bool, parse_number
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 __all__ = ["FAULTS", "GARBAGE", "OVERLOAD", "ImpedanceAnalyzerSim", "DemoBench", "VirtualClock"]
 
@@ -345,6 +347,15 @@ def record(directory: str | Path) -> list[Path]:
         transcript.save(path)
         paths.append(path)
     return paths
+
+
+@stands_in("impedance")
+def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+    """The analyser of ``opts.impedance_model``: the IM3590's own dialect, or the E4990A-style SCPI of the others."""
+    model = analyser_models.get(opts.impedance_model).name
+    sim = Im3590Sim(world) if model == "IM3590" else ImpedanceAnalyzerSim(world, model=model)
+    sim.start()
+    return Served(sim, {"address": sim.resource_name, "model": model}, sim.stop)
 
 
 def main(argv: list[str] | None = None) -> int:

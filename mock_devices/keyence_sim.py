@@ -25,6 +25,7 @@ from typing import Callable
 from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
 from mock_devices.bench_api import BenchView
 from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
 class _Refused(Exception):
@@ -185,6 +186,13 @@ def record_demo(path: str) -> int:
             pass
     tr.save(path)
     return len(tr)
+
+
+@stands_in("keyence")
+def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+    sim = KeyenceSim(world, range_mm=20.0, seed=opts.seed)
+    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
+    return Served(sim, {"address": srv.address, "dialect": "LK-G"}, srv.stop)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from mock_devices.bench_api import BenchView
 from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 G_N = 9.80665  # N per kgf
 
@@ -105,6 +106,13 @@ def record_demo(path: str) -> int:
         lc.wait_stable(0.0, 0.05, 0.05, 2.0, clock)
     tr.save(path)
     return len(tr)
+
+
+@stands_in("loadcell")
+def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+    sim = LoadCellSim(world, seed=opts.seed + 1)
+    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
+    return Served(sim, {"address": srv.address}, srv.stop)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -41,7 +41,7 @@ def test_check_names_the_instrument_whose_server_is_stopped(bench_rig, capsys, s
     if stop == "impedance":
         sims.impedance.stop()
     else:
-        sims._servers[1].stop()  # keyence, loadcell, clamp: in that order
+        sims.served["loadcell"].stop()
     assert main(["check", "--rig", str(path)]) == 3
     out, err = capsys.readouterr()
     lines = {line.split()[1]: line for line in out.splitlines()}
