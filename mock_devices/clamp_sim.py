@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import SimDevice, serve
+from mock_devices.serial_server import SimDevice, serve_stand_in
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
@@ -38,6 +38,4 @@ class ClampSim(SimDevice):
 
 @stands_in("clamp")
 def _stand_in(world: BenchView, opts: SimOptions) -> Served:
-    sim = ClampSim(world, seed=opts.seed + 2)
-    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
-    return Served(sim, {"mode": "motor", "address": srv.address}, srv.stop)
+    return serve_stand_in(ClampSim(world, seed=opts.seed + 2), opts, mode="motor")

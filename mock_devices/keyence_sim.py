@@ -24,7 +24,7 @@ from typing import Callable
 
 from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
 from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
@@ -190,9 +190,7 @@ def record_demo(path: str) -> int:
 
 @stands_in("keyence")
 def _stand_in(world: BenchView, opts: SimOptions) -> Served:
-    sim = KeyenceSim(world, range_mm=20.0, seed=opts.seed)
-    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
-    return Served(sim, {"address": srv.address, "dialect": "LK-G"}, srv.stop)
+    return serve_stand_in(KeyenceSim(world, range_mm=20.0, seed=opts.seed), opts, dialect="LK-G")
 
 
 def main(argv: list[str] | None = None) -> int:

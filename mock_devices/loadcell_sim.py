@@ -19,7 +19,7 @@ from __future__ import annotations
 
 
 from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 G_N = 9.80665  # N per kgf
@@ -110,9 +110,7 @@ def record_demo(path: str) -> int:
 
 @stands_in("loadcell")
 def _stand_in(world: BenchView, opts: SimOptions) -> Served:
-    sim = LoadCellSim(world, seed=opts.seed + 1)
-    srv = serve(sim, opts.transport)  # type: ignore[arg-type]
-    return Served(sim, {"address": srv.address}, srv.stop)
+    return serve_stand_in(LoadCellSim(world, seed=opts.seed + 1), opts)
 
 
 def main(argv: list[str] | None = None) -> int:

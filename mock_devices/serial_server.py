@@ -22,7 +22,9 @@ import socket
 import threading
 import time
 import tty
-from typing import Callable, Literal
+from typing import Any, Callable, Literal
+
+from mock_devices.stand_ins import Served, SimOptions
 
 COMMON_FAULTS = frozenset({"disconnect", "timeout", "garbage"})
 # Bytes a TCP client has not read yet, per client. A serial line has no flow control here: like a UART's buffer,
@@ -417,6 +419,13 @@ def serve(device: SimDevice, transport: Literal["pty", "tcp"] = "tcp", port: int
     if transport == "tcp":
         return TcpSerialServer(device, port).start()
     raise ValueError(f"transport must be 'pty' or 'tcp', not {transport!r}")
+
+
+def serve_stand_in(device: SimDevice, opts: SimOptions, **table: Any) -> Served:
+    """A serial simulator's stand-in on the simulated bench (``mock_devices.stand_ins``): served on the options'
+    transport; its rig-file table is its address plus ``table``."""
+    srv = serve(device, opts.transport)  # type: ignore[arg-type]
+    return Served(device, {"address": srv.address, **table}, srv.stop)
 
 
 def _interrupt(signum: int, frame: object) -> None:
