@@ -11,7 +11,7 @@ from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.rig import Rig, kinds, open_rig, parse_rig
 from mock_devices.simbench import SimulatedInstruments
-from mock_devices.world import Bench, Effect
+from mock_devices.world import World, Effect
 
 from labrig.clock import SIM_TIME_SCALE as DEFAULT_TIME_SCALE
 
@@ -41,7 +41,7 @@ def simulated_rig(
     safety: dict | None = None,
 ) -> Iterator[tuple[Rig, SimulatedInstruments]]:
     clock = ScaledClock(time_scale, time.time())
-    bench = Bench(clock, preset=preset, seed=seed, effects=effects)
+    bench = World(clock, preset=preset, seed=seed, effects=effects)
     sims = SimulatedInstruments(bench, serial_transport=serial_transport, seed=seed).start()
     try:
         cfg = parse_rig(rig_file_data(sims, clock, preset, safety), "simulated bench")

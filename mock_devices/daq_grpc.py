@@ -32,7 +32,7 @@ from nidaqmx._stubs import nidaqmx_pb2 as pb
 from nidaqmx._stubs import nidaqmx_pb2_grpc as pb_grpc
 from scipy.signal import lfilter
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.daq_attributes import getters, setters
 from mock_devices.daq_errors import ERR_MESSAGES, DaqmxError
 from mock_devices.daq_sim import RISING, SimDevice
@@ -266,7 +266,7 @@ class _GuardedServicer(DaqServicer):
 class SimDaq:
     """The simulated DAQ on a loopback gRPC server. ``address`` is "127.0.0.1:PORT" once started."""
 
-    def __init__(self, bench: BenchView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
+    def __init__(self, bench: WorldView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
                  interceptors: Sequence[grpc.ServerInterceptor] = (), max_workers: int = 16, **device_kw: Any):
         self.device = SimDevice(bench, device, product_type, **device_kw)
         self._port, self._interceptors, self._workers = port, tuple(interceptors), max_workers
@@ -344,7 +344,7 @@ DISPLACEMENT_M_PER_V = 2e-3
 
 
 @stands_in("daq")
-def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
     sim = SimDaq(world, current_gain_A_per_V=CURRENT_GAIN_A_PER_V, displacement_m_per_V=DISPLACEMENT_M_PER_V,
                  seed=opts.seed + 3).start()
     table = {"address": sim.address, "device": sim.device.name, "drive_channel": "ao0", "voltage_channel": "ai0",

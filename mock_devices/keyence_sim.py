@@ -23,7 +23,7 @@ from __future__ import annotations
 from typing import Callable
 
 from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
@@ -38,7 +38,7 @@ class KeyenceSim(SimDevice):
 
     FAULTS = COMMON_FAULTS | {"error", "overrange", "invalid"}
 
-    def __init__(self, bench: BenchView, *, range_mm: float = 5.0, resolution_mm: float = 1e-4, seed: int = 0):
+    def __init__(self, bench: WorldView, *, range_mm: float = 5.0, resolution_mm: float = 1e-4, seed: int = 0):
         super().__init__(seed)
         self.bench = bench
         self.range_mm = range_mm
@@ -189,7 +189,7 @@ def record_demo(path: str) -> int:
 
 
 @stands_in("keyence")
-def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
     return serve_stand_in(KeyenceSim(world, range_mm=20.0, seed=opts.seed), opts, dialect="LK-G")
 
 

@@ -18,7 +18,7 @@ Regenerate the recorded traffic the tests replay::
 from __future__ import annotations
 
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
@@ -34,7 +34,7 @@ class LoadCellSim(SimDevice):
 
     def __init__(
         self,
-        bench: BenchView,
+        bench: WorldView,
         *,
         frames_per_s: float = 20.0,
         max_wall_fps: float = 200.0,
@@ -109,7 +109,7 @@ def record_demo(path: str) -> int:
 
 
 @stands_in("loadcell")
-def _stand_in(world: BenchView, opts: SimOptions) -> Served:
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
     return serve_stand_in(LoadCellSim(world, seed=opts.seed + 1), opts)
 
 

@@ -10,14 +10,14 @@ from typing import Any
 
 from drivers import analyser_models
 from mock_devices.stand_ins import Served, SimOptions, stand_ins
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 
 class SimulatedInstruments:
     """Start/stop every simulated instrument (laser, load cell, clamp motor, impedance analyser, DAQ...) on
     127.0.0.1. Once started (and after they stop), each simulator is ``sims.<kind>`` (``sims.daq``, ``sims.clamp``...)."""
 
-    def __init__(self, bench: Bench, serial_transport: str = "tcp", seed: int = 0,
+    def __init__(self, bench: World, serial_transport: str = "tcp", seed: int = 0,
                  impedance_model: str = analyser_models.DEFAULT_MODEL):
         self.bench = bench
         self.transport = serial_transport

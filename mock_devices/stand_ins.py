@@ -14,7 +14,7 @@ import pkgutil
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 
 
 @dataclass(frozen=True)
@@ -33,7 +33,7 @@ class Served:
     stop: Callable[[], None]
 
 
-StandIn = Callable[[BenchView, SimOptions], Served]
+StandIn = Callable[[WorldView, SimOptions], Served]
 STAND_INS: dict[str, StandIn] = {}
 
 

@@ -258,9 +258,9 @@ def test_start_trigger_order_matters_as_on_hardware(sim: SimDaq) -> None:
 
 def test_with_the_simulated_world() -> None:
     """The real world bench behind the DAQ: a finite record and a few continuous blocks."""
-    from mock_devices.world import Bench
+    from mock_devices.world import World
 
-    world = Bench(ScaledClock(1000.0))
+    world = World(ScaledClock(1000.0))
     with SimDaq(world) as sim, DaqRig(grpc_target=sim.address) as rig:
         fs = 1000.0
         drive = 0.5 * np.sin(2 * np.pi * np.arange(5000) / fs)

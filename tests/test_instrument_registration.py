@@ -26,7 +26,7 @@ from labrig.validation import StrictModel
 from mock_devices.serial_server import SimDevice, serve
 from mock_devices.simbench import SimulatedInstruments
 from mock_devices.stand_ins import STAND_INS, Served, SimOptions
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 STEP = Path(__file__).parent / "data" / "sessions" / "step.toml"  # the short recorded-session protocol
 
@@ -107,7 +107,7 @@ def test_a_registered_instrument_is_simulated_opened_recorded_and_replayed(therm
 
 def test_labrig_check_checks_a_registered_instrument(thermometer, tmp_path, capsys):
     clock = ScaledClock(1000.0, time.time())
-    with SimulatedInstruments(Bench(clock, seed=5), seed=5) as sims:
+    with SimulatedInstruments(World(clock, seed=5), seed=5) as sims:
         rig = tmp_path / "rig.toml"
         rig.write_text(tomli_w.dumps(rig_file_data(sims, clock, "paper")))
         assert main(["check", "--rig", str(rig)]) == 0
