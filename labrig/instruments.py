@@ -30,7 +30,7 @@ from pydantic import Field, StringConstraints, model_validator
 from drivers import analyser_models
 from drivers.analysers import open_analyser
 from drivers.clamp import MotorClamp, OperatorClamp
-from drivers.daq import DaqRig
+from drivers.daq import Daq
 from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.keyence import open_keyence
 from drivers.loadcell import LoadCell
@@ -78,13 +78,13 @@ class DaqCfg(StrictModel):
         return None if self.address == "local" else self.address
 
 
-def _open_daq(d: DaqCfg, o: Opening) -> DaqRig:
-    return DaqRig(grpc_target=d.grpc_target, transcript=o.transcript, watchdog_s=d.watchdog_s,
+def _open_daq(d: DaqCfg, o: Opening) -> Daq:
+    return Daq(grpc_target=d.grpc_target, transcript=o.transcript, watchdog_s=d.watchdog_s,
                   time_scale=o.clock.time_scale, **d.channels())
 
 
 def _check_daq(d: DaqCfg, rig: Any) -> tuple[str, str]:
-    with DaqRig(grpc_target=d.grpc_target, **d.channels()) as daq:
+    with Daq(grpc_target=d.grpc_target, **d.channels()) as daq:
         out = daq.run_finite(np.zeros(20), 1000.0, timeout_s=10.0)  # 20 ms at 0 V: reads every AI channel
     where = "this computer" if d.address == "local" else f"gRPC {d.address}"
     return (f"NI-DAQmx {d.device} on {where}",
@@ -92,9 +92,9 @@ def _check_daq(d: DaqCfg, rig: Any) -> tuple[str, str]:
             f"{np.mean(out['disp_m']) * 1e3:+.4f} mm")
 
 
-def _replay_daq(d: DaqCfg, r: Replaying) -> DaqRig:
+def _replay_daq(d: DaqCfg, r: Replaying) -> Daq:
     # the recorded call arguments hold the NI device name, so the replaying driver gets both it and its own name
-    daq = DaqRig(name="daq", replay=r.transcript("daq").replay_calls("daq"), **d.channels())
+    daq = Daq(name="daq", replay=r.transcript("daq").replay_calls("daq"), **d.channels())
     r.replayers["daq"] = daq._replay
     return daq
 

@@ -146,7 +146,7 @@ class Rig:
     transcript: Transcript = field(default_factory=Transcript)
 
     @property
-    def daq(self) -> Any:  # drivers.daq.DaqRig
+    def daq(self) -> Any:  # drivers.daq.Daq
         return self.instruments["daq"]
 
     @property
