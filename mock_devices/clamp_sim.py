@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 from mock_devices.world_api import WorldView
-from mock_devices.serial_server import SimDevice, serve_stand_in
+from mock_devices.serial_server import SimSerialDevice, serve_stand_in
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
-class ClampSim(SimDevice):
+class ClampSim(SimSerialDevice):
     def __init__(self, bench: WorldView, seed: int = 0, max_force_N: float = 98.0):
         super().__init__(seed)
         self.bench = bench

@@ -1,7 +1,7 @@
 """A simulated NI gRPC Device Server for NI-DAQmx: the unmodified ``nidaqmx`` package talks to it.
 
 ``SimDaq`` serves service ``nidaqmx_grpc.NiDAQmx`` (the stubs that ship in the nidaqmx wheel) on
-127.0.0.1, backed by ``mock_devices.daq_sim.SimDevice``. Errors travel as the real server sends them:
+127.0.0.1, backed by ``mock_devices.daq_sim.SimDaqDevice``. Errors travel as the real server sends them:
 gRPC status UNKNOWN with trailing metadata ``ni-error`` (the DAQmx code) and, for reads,
 ``ni-samps-per-chan-read``; nidaqmx turns these into ``DaqError`` / ``DaqReadError``.
 
@@ -35,7 +35,7 @@ from scipy.signal import lfilter
 from mock_devices.world_api import WorldView
 from mock_devices.daq_attributes import getters, setters
 from mock_devices.daq_errors import ERR_MESSAGES, DaqmxError
-from mock_devices.daq_sim import RISING, SimDevice
+from mock_devices.daq_sim import RISING, SimDaqDevice
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
@@ -49,7 +49,7 @@ ACQUIRED_INTO_BUFFER = 1  # nidaqmx.constants.EveryNSamplesEventType
 class DaqServicer(pb_grpc.NiDAQmxServicer):
     """The RPCs an nidaqmx Task uses for AI/AO voltage, sample clock timing, start triggers, read and write."""
 
-    def __init__(self, device: SimDevice):
+    def __init__(self, device: SimDaqDevice):
         self.dev = device
         self._get = getters(device)
         self._set = setters(device)
@@ -236,7 +236,7 @@ for _rpc in pb.DESCRIPTOR.services_by_name["NiDAQmx"].methods_by_name:
         setattr(DaqServicer, _rpc, _reset_rpc(_rpc))
 
 
-def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
+def _guarded(dev: SimDaqDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
     """Report ``DaqmxError`` the way NI's server does; apply the one-shot injected error first."""
 
     @functools.wraps(fn)
@@ -268,7 +268,7 @@ class SimDaq:
 
     def __init__(self, bench: WorldView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
                  interceptors: Sequence[grpc.ServerInterceptor] = (), max_workers: int = 16, **device_kw: Any):
-        self.device = SimDevice(bench, device, product_type, **device_kw)
+        self.device = SimDaqDevice(bench, device, product_type, **device_kw)
         self._port, self._interceptors, self._workers = port, tuple(interceptors), max_workers
         self._server: grpc.Server | None = None
         self._lock = threading.Lock()

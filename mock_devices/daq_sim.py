@@ -85,7 +85,7 @@ def _default_input_buffer(rate: float) -> int:
     return 1_000_000
 
 
-class SimDevice:
+class SimDaqDevice:
     """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting.
 
     Causality: an AI sample is computed from what AO puts out at that sample's instant. Samples are computed

@@ -24,7 +24,7 @@ from typing import Callable
 
 from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
 from mock_devices.world_api import WorldView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimSerialDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
@@ -33,7 +33,7 @@ class _Refused(Exception):
         self.code = code
 
 
-class KeyenceSim(SimDevice):
+class KeyenceSim(SimSerialDevice):
     """Protocol layer of the LK controller over ``bench.displacement_now()`` (m, + towards the head)."""
 
     FAULTS = COMMON_FAULTS | {"error", "overrange", "invalid"}

@@ -19,13 +19,13 @@ from __future__ import annotations
 
 
 from mock_devices.world_api import WorldView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, serve_stand_in, sim_main
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimSerialDevice, serve, serve_stand_in, sim_main
 from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 G_N = 9.80665  # N per kgf
 
 
-class LoadCellSim(SimDevice):
+class LoadCellSim(SimSerialDevice):
     """Protocol layer of the indicator over ``bench.clamp_force_now()`` (N)."""
 
     FAULTS = COMMON_FAULTS | {"overrange", "noise"}

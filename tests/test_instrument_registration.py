@@ -23,7 +23,7 @@ from labrig.replay import check, replay_rig
 from labrig.simulate import rig_file_data
 from labrig.store.reader import SessionReader
 from labrig.validation import StrictModel
-from mock_devices.serial_server import SimDevice, serve
+from mock_devices.serial_server import SimSerialDevice, serve
 from mock_devices.simbench import SimulatedInstruments
 from mock_devices.stand_ins import STAND_INS, Served, SimOptions
 from mock_devices.world import World
@@ -44,7 +44,7 @@ class Thermometer(SerialInstrument):
 
 
 # ---- the simulator with its own stand-in (would be mock_devices/thermometer_sim.py)
-class ThermometerSim(SimDevice):
+class ThermometerSim(SimSerialDevice):
     def respond(self, line: bytes) -> bytes:
         return b"T,+21.50\r" if line.strip() == b"T?" else b"ER\r"
 
