@@ -69,3 +69,5 @@ class InstrumentKind:
     look_at: str  # what to look at when the check faults
     replay: Callable[[Any, Replaying], Instrument]  # (its table, the replay) -> a driver answering from the recording
     default: StrictModel | None = None  # the table when the rig file leaves it out (None: required)
+    # the table as an older labrig recorded it in a session, read as today's (replay of old sessions)
+    as_recorded: Callable[[dict[str, Any]], dict[str, Any]] | None = None

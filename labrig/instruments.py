@@ -220,7 +220,9 @@ KINDS: dict[str, InstrumentKind] = {k.name: k for k in (
     InstrumentKind("daq", DaqCfg, _open_daq, _check_daq,
                    "the NI device name and, for a remote DAQ, the gRPC server at the address", _replay_daq),
     InstrumentKind("impedance", ImpedanceCfg, _open_impedance, _check_impedance,
-                   "the analyser's LAN settings (IP, port), that it is on, and [instruments.impedance] model", _replay_impedance),
+                   "the analyser's LAN settings (IP, port), that it is on, and [instruments.impedance] model", _replay_impedance,
+                   # sessions recorded before rig files named the analyser ran on labrig's older simulated analyser
+                   as_recorded=lambda t: {"model": analyser_models.LEGACY_MODEL, **t}),
     InstrumentKind("keyence", KeyenceCfg, _open_keyence, _check_keyence,
                    "the RS-232C cable, port and baud rate, the controller's power and its mode (R0 = general)", _replay_keyence),
     InstrumentKind("loadcell", LoadCellCfg, _open_loadcell, _check_loadcell,

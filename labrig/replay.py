@@ -23,7 +23,6 @@ from typing import Any
 
 import numpy as np
 
-from drivers import analyser_models
 from drivers.errors import ReplayMismatch
 from drivers.stream_replay import StreamReplay  # noqa: F401 - where tests and tools have always found it
 from drivers.transcript import Exchange, Transcript
@@ -96,11 +95,17 @@ def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
     return Transcript(out)
 
 
+def _as_recorded(name: str, table: Any) -> Any:
+    """An instrument's table as an older labrig recorded it, read as today's by its kind (unknown kinds as they are)."""
+    kind = kinds().get(name)
+    return kind.as_recorded(table) if kind is not None and kind.as_recorded and isinstance(table, dict) else table
+
+
 def replay_rig(reader: SessionReader) -> ReplayRig:
     """A Rig whose drivers answer from the session's transcripts (instrument settings from its rig config)."""
     data = {k: v for k, v in reader.rig.items() if k in ("clock", "sample", "safety", "instruments")}
-    # sessions recorded before rig files named the analyser ran on labrig's older simulated analyser
-    data.get("instruments", {}).get("impedance", {}).setdefault("model", analyser_models.LEGACY_MODEL)
+    if isinstance(data.get("instruments"), dict):
+        data["instruments"] = {name: _as_recorded(name, t) for name, t in data["instruments"].items()}
     cfg = parse_rig(data, f"{reader.path} (rig as recorded)")
     start = [s.t_start for s in reader.steps() if math.isfinite(s.t_start)]
     clock = VirtualClock(min(start) if start else 0.0)
