@@ -68,8 +68,11 @@ class ReplayRig:
     replayers: dict[str, Any]  # device -> CallReplayer / ReplaySerial / ReplayMessages (their exhausted flags)
 
     def close(self) -> None:
-        # nothing real to release; closing the drivers would send traffic the recording does not hold
-        self.rig.loadcell.close()  # only its port, which replays
+        # nothing real to release; closing a driver with a recorded conversation would send traffic the recording
+        # does not hold, so only the others close (the load cell's replayed stream, an operator clamp)
+        for name, dev in self.rig.instruments.items():
+            if name not in self.replayers:
+                dev.close()
 
 
 def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
