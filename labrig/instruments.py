@@ -25,7 +25,7 @@ from contextlib import closing
 from typing import Annotated, Any, Literal
 
 import numpy as np
-from pydantic import Field, StringConstraints, model_validator
+from pydantic import Field, StringConstraints, ValidationInfo, field_validator
 
 from drivers import analyser_models
 from drivers.analysers import open_analyser
@@ -186,13 +186,14 @@ def _replay_loadcell(c: LoadCellCfg, r: Replaying) -> LoadCell:
 # ------------------------------------------------------------------ the clamp: a motor controller, or the operator
 class ClampCfg(StrictModel):
     mode: Literal["motor", "operator"] = "operator"
-    address: Address | None = None
+    address: Address | None = Field(None, validate_default=True)
 
-    @model_validator(mode="after")
-    def _motor_has_address(self) -> "ClampCfg":
-        if self.mode == "motor" and not self.address:
-            raise ValueError("address: required when mode = 'motor'")
-        return self
+    @field_validator("address")
+    @classmethod
+    def _motor_has_address(cls, address: str | None, info: ValidationInfo) -> str | None:
+        if info.data.get("mode") == "motor" and not address:
+            raise ValueError("required when mode = 'motor'")
+        return address
 
 
 def _open_clamp(c: ClampCfg, o: Opening) -> Any:
