@@ -3,7 +3,7 @@ side in one run on the same 1000x bench, then (with --paper-sweep) the whole pap
 
 Run: python bench/analyser_sweep.py [--paper-sweep]
 The IM3590 measures point by point (one program message per point) where the SIM-WIDE/E4990A command set
-triggers one sweep, so the simulated bench computes Z once per point: mock_devices.world.Bench.impedance costs
+triggers one sweep, so the simulated bench computes Z once per point: mock_devices.world.World.impedance costs
 ~10 ms per call (the clamp curves are rebuilt for each specimen), which the IM3590 pays 31 times a spectrum.
 Target: the whole paper sweep on the IM3590 within 20 % of its wall time on SIM-WIDE.
 """
@@ -22,13 +22,13 @@ from drivers.analysers import open_analyser
 from labrig.clock import ScaledClock
 from mock_devices.im3590_sim import Im3590Sim
 from mock_devices.impedance_sim import ImpedanceAnalyzerSim
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 FREQS = np.geomspace(0.1, 1e4, 31)
 REPEATS = 5
 
 
-def one(model: str, sim_cls, bench: Bench) -> tuple[float, float]:
+def one(model: str, sim_cls, bench: World) -> tuple[float, float]:
     sim = sim_cls(bench) if model == "IM3590" else sim_cls(bench, model=model)
     with sim, open_analyser(sim.resource_name, model, timeout_s=5.0) as an:
         walls, sims = [], []
@@ -42,7 +42,7 @@ def one(model: str, sim_cls, bench: Bench) -> tuple[float, float]:
 
 
 def main() -> None:
-    bench = Bench(ScaledClock(1000.0), seed=1)
+    bench = World(ScaledClock(1000.0), seed=1)
     rows = {model: one(model, cls, bench) for model, cls in (("SIM-WIDE", ImpedanceAnalyzerSim), ("IM3590", Im3590Sim))}
     for model, (wall, sim) in rows.items():
         print(f"{model:9s} 31-point spectrum 0.1 Hz-10 kHz: wall {wall:.3f} s (median of {REPEATS}), simulated {sim:.0f} s")

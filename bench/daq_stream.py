@@ -62,14 +62,14 @@ def main(argv: list[str] | None = None) -> int:
                     help="arm the DAQ watchdog with this timeout (s) while streaming, as labrig run does")
     a = ap.parse_args(argv)
 
-    from drivers.daq import DaqRig
+    from drivers.daq import Daq
     from drivers.errors import InstrumentError
 
     parent, child = mp.Pipe()
     proc = mp.get_context("spawn").Process(target=serve, args=(child,), daemon=True)
     proc.start()
     address = parent.recv()
-    rig = DaqRig(grpc_target=address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V,
+    rig = Daq(grpc_target=address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V,
                  watchdog_s=a.watchdog)
     n_read, lost, last, error = 0, 0, None, ""
     read_s: list[float] = []

@@ -70,7 +70,7 @@ def _digest(a: np.ndarray | None) -> str | None:
     return None if a is None else hashlib.sha256(to_bytes(a)).hexdigest()
 
 
-class DaqRig(Instrument):
+class Daq(Instrument):
     """AO drive + 3 AI channels on one NI DAQ device, SI units in and out."""
 
     def __init__(
@@ -114,7 +114,7 @@ class DaqRig(Instrument):
             self.arm_watchdog(watchdog_s, time_scale)
 
     @classmethod
-    def from_replay(cls, transcript: Transcript, device: str = "daq", **settings: Any) -> "DaqRig":
+    def from_replay(cls, transcript: Transcript, device: str = "daq", **settings: Any) -> "Daq":
         """A rig that answers from ``transcript``'s calls of ``device`` (the rig's ``name``), no hardware."""
         return cls(name=device, replay=transcript.replay_calls(device), **settings)
 
@@ -409,7 +409,7 @@ class DaqRig(Instrument):
             if self._channel is not None:
                 self._channel.close()
 
-    def __enter__(self) -> "DaqRig":
+    def __enter__(self) -> "Daq":
         return self
 
     def __exit__(self, exc_type: object, *rest: object) -> None:

@@ -17,6 +17,8 @@ from typing import Any, Callable, Literal
 
 import numpy as np
 
+from labrig.records import RecordKind
+
 ExitStatus = Literal["success", "abort", "fail"]
 StepStatus = Literal["done", "aborted", "failed", "skipped"]
 
@@ -42,7 +44,7 @@ class StreamSpec:
 class StepPlan:
     index: int
     name: str  # unique within the run, e.g. "p3062/eis", "p3062/sine_2Hz"
-    kind: str  # "clamp" | "settle" | "eis" | "step" | "harmonic" | "stepped_sine" | "multisine" | "free" | ...
+    kind: str  # a labrig.records.RecordKind
     metadata: dict[str, Any]  # pressure_kPa, amplitude_V, frequency_Hz, fs_Hz, duration_s, period_s, ...
     streams: tuple[StreamSpec, ...] = ()
 
@@ -163,4 +165,4 @@ def planned_seconds(kind: str, metadata: dict[str, Any], streams: tuple) -> floa
             return s.expected_rows / float(metadata["fs_Hz"])
     if "duration_s" in metadata:
         return float(metadata["duration_s"])
-    return {"clamp": 10.0, "settle": 10.0, "eis": 60.0}.get(kind, 10.0)
+    return {RecordKind.CLAMP: 10.0, RecordKind.SETTLE: 10.0, RecordKind.EIS: 60.0}.get(kind, 10.0)

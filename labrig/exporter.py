@@ -30,10 +30,10 @@ from pydantic import ValidationError
 
 from labrig import __version__
 from labrig.errors import BadInput
-from labrig.importer import EIS_REQUIRED, TIME_KINDS, Record
+from labrig.importer import EIS_REQUIRED, Record
+from labrig.records import DATA_KINDS, RecordKind
 from labrig.specimen import Specimen
 
-DATA_KINDS = TIME_KINDS + ("eis",)
 RECORD_KEYS = ("frequency_Hz", "amplitude_V", "period_s", "temperature_C")  # optional manifest keys taken from the metadata
 
 
@@ -140,7 +140,7 @@ def export_session(session: str | Path, out_dir: str | Path, overwrite: bool = F
                 done.notes.append(f"step {st.name}: {st.status}, not exported")
                 continue
             streams = r.streams(st)
-            need = "eis" if st.kind == "eis" else "daq"
+            need = "eis" if st.kind == RecordKind.EIS else "daq"
             if need not in streams:
                 done.notes.append(f"step {st.name}: no {need} data, not exported")
                 continue
@@ -148,14 +148,14 @@ def export_session(session: str | Path, out_dir: str | Path, overwrite: bool = F
             if entry is None:
                 done.notes.append(f"step {st.name}: {why}, not exported")
                 continue
-            if st.kind == "eis":
+            if st.kind == RecordKind.EIS:
                 eis = r.stream(st, "eis")
                 cols = {k: eis[k] for k in EIS_REQUIRED}
             else:
                 force = r.stream(st, "force") if "force" in streams else None
                 cols = time_columns(st.t_start, r.stream(st, "daq"), force)
             n = next(iter(cols.values())).size
-            if not _finite(cols) or n < (1 if st.kind == "eis" else 2):
+            if not _finite(cols) or n < (1 if st.kind == RecordKind.EIS else 2):
                 done.notes.append(f"step {st.name}: non-finite values or too few rows, not exported")
                 continue
             write_csv(out_dir / entry["file"], cols)

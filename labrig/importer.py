@@ -36,8 +36,8 @@ from labrig.safe_read import read_text_file, text_stream
 from labrig.specimen import Specimen
 from labrig.validation import NonEmptyText, StrictModel, Text
 from labrig.events import Block, RunStart, RunStop, StepEnd, StepPlan, StepStart, daq_stream, eis_stream, force_stream, new_uid
+from labrig.records import DATA_KINDS, SINE_KINDS, RecordKind
 
-TIME_KINDS = ("step", "harmonic", "stepped_sine", "multisine", "free")
 TIME_REQUIRED = ("t_s", "v_V", "i_A", "disp_m")
 TIME_OPTIONAL = ("force_N",)
 EIS_REQUIRED = ("f_Hz", "z_re_ohm", "z_im_ohm")
@@ -50,7 +50,7 @@ MAX_RECORDS = 10_000
 
 
 class Record(StrictModel):
-    kind: Literal["step", "harmonic", "stepped_sine", "multisine", "free", "eis"]
+    kind: Literal[tuple(k.value for k in DATA_KINDS)]  # type: ignore[valid-type]
     file: NonEmptyText
     pressure_kPa: float = Field(gt=0, le=1e5)  # 100 MPa: far above any clamp
     frequency_Hz: float | None = Field(default=None, gt=0, le=1e7)
@@ -62,9 +62,9 @@ class Record(StrictModel):
     @model_validator(mode="after")
     def _needs(self) -> "Record":
         # the fitter cannot recover these from the data alone, so the manifest must say them
-        if self.kind in ("stepped_sine", "harmonic") and self.frequency_Hz is None:
+        if self.kind in SINE_KINDS and self.frequency_Hz is None:
             raise ValueError(f"a {self.kind} record needs frequency_Hz")
-        if self.kind == "multisine" and self.period_s is None:
+        if self.kind == RecordKind.MULTISINE and self.period_s is None:
             raise ValueError("a multisine record needs period_s")
         return self
 
@@ -202,7 +202,7 @@ def record_path(manifest: Path, index: int, rec: Record, allow_outside: bool = F
 
 
 def load_record(path: Path, rec: Record) -> Table:
-    if rec.kind == "eis":
+    if rec.kind == RecordKind.EIS:
         table = read_csv(path, EIS_REQUIRED)
         _check_axis(table, "f_Hz", strictly_increasing=False, positive=True)
     else:
@@ -227,7 +227,7 @@ def _plan(records: list[Record], tables: list[Table]) -> tuple[StepPlan, ...]:
     for i, (rec, tab) in enumerate(zip(records, tables)):
         meta = {k: v for k, v in rec.model_dump().items() if v is not None and k != "file"}
         meta["source_file"] = rec.file
-        if rec.kind == "eis":
+        if rec.kind == RecordKind.EIS:
             streams = (eis_stream(tab.rows),)
         else:
             t = tab.columns["t_s"]
@@ -241,7 +241,7 @@ def _plan(records: list[Record], tables: list[Table]) -> tuple[StepPlan, ...]:
 def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], bool]:
     """Each record's start time on the session clock, and whether the CSVs' own clock gave them (see the
     module docstring); back to back from 0 otherwise."""
-    spans = [None if rec.kind == "eis" else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
+    spans = [None if rec.kind == RecordKind.EIS else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
     timed = [sp for sp in spans if sp is not None]
     own = all(b[0] >= a[1] for a, b in zip(timed, timed[1:]))
     starts, cursor = [], timed[0][0] if own and timed else 0.0
@@ -286,7 +286,7 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
         t1 = starts[0]
         for plan, tab, t0 in zip(steps, tables, starts):
             w(StepStart(uid, plan.index, t0))
-            data = _from_start(tab) if own and plan.kind != "eis" else tab.columns
+            data = _from_start(tab) if own and plan.kind != RecordKind.EIS else tab.columns
             for spec in plan.streams:
                 cols = [c.name for c in spec.columns]
                 for a in range(0, tab.rows, BLOCK_ROWS):

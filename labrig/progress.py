@@ -17,13 +17,14 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn
 
 from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepStart, planned_seconds
+from labrig.records import RecordKind
 
 
 def describe_step(kind: str, md: dict[str, Any]) -> str:
     """What a step measures, in a few words: ``stepped sine 2 Hz 0.5 V``, ``impedance 0.1-10000 Hz``."""
-    if kind == "eis":
+    if kind == RecordKind.EIS:
         return f"impedance {md.get('f_start_Hz', '?'):g}-{md.get('f_stop_Hz', '?'):g} Hz" if "f_start_Hz" in md else "impedance"
-    if kind == "clamp":
+    if kind == RecordKind.CLAMP:
         return f"clamp to {md['force_N']:.1f} N" if "force_N" in md else "clamp"
     words = kind.replace("_", " ")
     if "frequency_Hz" in md:

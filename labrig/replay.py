@@ -1,9 +1,9 @@
 """Replay a recorded session: into the live window, or against the runner (``--check``).
 
 ``check(path)`` re-runs the session's protocol (its stored config) on a rig whose drivers answer from
-the session's own transcripts: the DAQ through ``DaqRig.from_replay``, the laser and the clamp motor
-through ``ReplaySerial``, the analyser through ``ReplayMessages`` and the load cell through
-``StreamReplay`` below. The clock is virtual (``sleep`` advances it at once), so nothing waits. Every
+the session's own transcripts, each instrument stood in by its entry of ``labrig.instruments`` (the DAQ
+from its recorded calls, the laser and the clamp motor through ``ReplaySerial``, the analyser through
+``ReplayMessages``, the load cell through ``drivers.stream_replay.StreamReplay``). The clock is virtual (``sleep`` advances it at once), so nothing waits. Every
 command the protocol sends must match the recording exactly (else ``ReplayMismatch`` names it) and
 every ``daq`` and ``eis`` block the runner emits must equal the stored rows bit for bit. The load-cell
 stream depends on when it was polled, so ``force`` is compared loosely: each replayed value must lie
@@ -23,17 +23,13 @@ from typing import Any
 
 import numpy as np
 
-from drivers.clamp import MotorClamp, OperatorClamp
-from drivers.daq import DaqRig
 from drivers.errors import ReplayMismatch
-from drivers import analyser_models
-from drivers.analysers import open_analyser
-from drivers.keyence import open_keyence
-from drivers.loadcell import LoadCell
-from drivers.transcript import Exchange, ReplayMessages, ReplaySerial, Transcript
+from drivers.stream_replay import StreamReplay  # noqa: F401 - where tests and tools have always found it
+from drivers.transcript import Exchange, Transcript
 from labrig.errors import BadInput
 from labrig.events import Block, Event, RunStart, StepStart
-from labrig.rig import Rig, parse_rig
+from labrig.instrument_kind import Replaying
+from labrig.rig import Rig, kinds, parse_rig
 from labrig.store.reader import SessionReader
 
 FORCE_SLACK_N = 1.0
@@ -66,127 +62,17 @@ class VirtualClock:
         return event.is_set()
 
 
-class StreamReplay:
-    """A pyserial-like port replaying a streaming instrument (the load cell) against the other devices.
-
-    All devices share one transcript clock, so a recorded frame is released once the replay has reached
-    the recorded exchange of another device that came after it: the frames the runner saw while it
-    waited for, say, the clamp to settle are exactly those before the next command of any other
-    instrument. Writes (zero, tare) must match the recording in order.
-    """
-
-    def __init__(self, exchanges: list[Exchange], others: list[Any], device: str = "loadcell",
-                 clock: Any = None, scale: float = 1.0):
-        self.device, self.others = device, others
-        self._reads = [e for e in exchanges if e.op == "read"]
-        self._writes = [e for e in exchanges if e.op == "write"]
-        self._r = self._w = 0
-        self._buf = bytearray()
-        self._lock = threading.Lock()
-        self.timeout = 0.0
-        self.is_open = True
-        self.clock, self.scale = clock, float(scale)  # rig seconds per recorded (wall) second
-        self._anchor: tuple[float, float] | None = None  # (recorded t, replay clock) at the last other-device exchange
-
-    def _horizon(self) -> float:
-        """Recorded time of the next exchange any other device still waits to replay (inf: all done)."""
-        times = []
-        for rep in self.others:
-            ex, pos = rep._ex, rep._pos  # the replayers' cursors (drivers.transcript)
-            if isinstance(rep, ReplaySerial):
-                nxt = next((e for e in ex[pos:] if e.op == "write"), None)
-            else:
-                nxt = ex[pos] if pos < len(ex) else None
-            if nxt is not None:
-                times.append(nxt.t)
-        return min(times, default=math.inf)
-
-    def _last_other(self) -> float:
-        """Recorded time of the latest exchange another device has replayed (-inf: none yet)."""
-        done = [rep._ex[rep._pos - 1].t for rep in self.others if rep._pos > 0]
-        return max(done, default=-math.inf)
-
-    def _paced(self, t: float) -> bool:
-        """Has the replay clock reached the frame's recorded time? Measured from the last exchange of
-        another device (the sync point both runs share), at the recorded clock's scale."""
-        last = self._last_other()
-        # before any other device spoke, what came before the run; and the first frame at once (the recorded
-        # run had it by then: its clock also ran while it computed, the replay's runs only while it waits)
-        if self.clock is None or last == -math.inf or self._r == 0:
-            return True
-        if self._anchor is None or self._anchor[0] != last:
-            self._anchor = (last, self.clock.now())
-        t_a, c_a = self._anchor
-        return t <= t_a or (t - t_a) * self.scale <= self.clock.now() - c_a
-
-    def _release(self) -> None:
-        h = self._horizon()
-        while self._r < len(self._reads) and self._reads[self._r].t <= h and self._paced(self._reads[self._r].t):
-            self._buf += self._reads[self._r].payload
-            self._r += 1
-
-    @property
-    def in_waiting(self) -> int:
-        with self._lock:
-            self._release()
-            return len(self._buf)
-
-    def read(self, size: int = 1) -> bytes:
-        with self._lock:
-            self._release()
-            out = bytes(self._buf[:size])
-            del self._buf[:size]
-            return out
-
-    def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
-        with self._lock:
-            self._release()
-            i = self._buf.find(expected)
-            n = len(self._buf) if i < 0 else i + len(expected)
-            n = n if size is None else min(n, size)
-            out = bytes(self._buf[:n])
-            del self._buf[:n]
-            return out
-
-    def write(self, data: bytes) -> int:
-        nxt = self._writes[self._w] if self._w < len(self._writes) else None
-        if nxt is None or nxt.payload != bytes(data):
-            raise ReplayMismatch(self.device, f"sent {bytes(data)!r} but the recording expects {'end of recording' if nxt is None else repr(nxt.payload)}")
-        self._w += 1
-        return len(data)
-
-    def reset_input_buffer(self) -> None:
-        with self._lock:
-            self._buf.clear()
-
-    def flush(self) -> None:
-        pass
-
-    def close(self) -> None:
-        self.is_open = False
-
-
-class _ReplayLoadCell(LoadCell):
-    """The load cell parsing in the caller's thread (no reader thread racing the replay clock); the runner
-    and its force logger both read it, so parsing is serialised."""
-
-    def __init__(self, port: Any, stale_s: float):
-        super().__init__(port, stale_s=stale_s, background=False)
-        self._pump_lock = threading.Lock()
-
-    def pump(self) -> None:
-        with self._pump_lock:
-            super().pump()
-
-
 @dataclass
 class ReplayRig:
     rig: Rig
     replayers: dict[str, Any]  # device -> CallReplayer / ReplaySerial / ReplayMessages (their exhausted flags)
 
     def close(self) -> None:
-        # nothing real to release; closing the drivers would send traffic the recording does not hold
-        self.rig.loadcell.close()
+        # nothing real to release; closing a driver with a recorded conversation would send traffic the recording
+        # does not hold, so only the others close (the load cell's replayed stream, an operator clamp)
+        for name, dev in self.rig.instruments.items():
+            if name not in self.replayers:
+                dev.close()
 
 
 def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
@@ -212,38 +98,24 @@ def with_rows(tr: Transcript, reader: SessionReader) -> Transcript:
     return Transcript(out)
 
 
+def _as_recorded(name: str, table: Any) -> Any:
+    """An instrument's table as an older labrig recorded it, read as today's by its kind (unknown kinds as they are)."""
+    kind = kinds().get(name)
+    return kind.as_recorded(table) if kind is not None and kind.as_recorded and isinstance(table, dict) else table
+
+
 def replay_rig(reader: SessionReader) -> ReplayRig:
     """A Rig whose drivers answer from the session's transcripts (instrument settings from its rig config)."""
     data = {k: v for k, v in reader.rig.items() if k in ("clock", "sample", "safety", "instruments")}
-    # sessions recorded before rig files named the analyser ran on labrig's older simulated analyser
-    data.get("instruments", {}).get("impedance", {}).setdefault("model", analyser_models.LEGACY_MODEL)
+    if isinstance(data.get("instruments"), dict):
+        data["instruments"] = {name: _as_recorded(name, t) for name, t in data["instruments"].items()}
     cfg = parse_rig(data, f"{reader.path} (rig as recorded)")
-    tr = {dev: with_rows(Transcript.loads(reader.transcript(dev)), reader) for dev in ("daq", "impedance", "keyence", "loadcell", "clamp")}
-    ins = cfg.instruments
-    d = ins.daq
-    # DaqRig.from_replay's ``device`` is the transcript's device name and shadows the NI device name the
-    # recorded call arguments hold, so build the replaying rig the way from_replay does, with both
-    daq = DaqRig(name="daq", replay=tr["daq"].replay_calls("daq"), device=d.device, drive_channel=d.drive_channel, voltage_channel=d.voltage_channel,
-                             current_channel=d.current_channel, displacement_channel=d.displacement_channel,
-                             current_gain_A_per_V=d.current_gain_A_per_V, displacement_m_per_V=d.displacement_m_per_V)
-    reps: dict[str, Any] = {"daq": daq._replay}
-    reps["impedance"] = ReplayMessages(tr["impedance"].for_device("impedance"), "impedance")
-    reps["keyence"] = ReplaySerial(tr["keyence"].for_device("keyence"), "keyence")
-    analyzer = open_analyser(reps["impedance"], ins.impedance.model, sweep_timeout_s=600.0)
-    laser = open_keyence(reps["keyence"], dialect=ins.keyence.dialect)
-    if ins.clamp.mode == "motor":
-        reps["clamp"] = ReplaySerial(tr["clamp"].for_device("clamp"), "clamp")
-        clamp: Any = MotorClamp(reps["clamp"], max_force_N=cfg.safety.max_force_N)
-    else:
-        clamp = OperatorClamp(ask=lambda msg: None)  # the operator already did it: the load cell replay says so
     start = [s.t_start for s in reader.steps() if math.isfinite(s.t_start)]
     clock = VirtualClock(min(start) if start else 0.0)
-    # frames come at the recorded pace on the replay clock (rig s = recorded wall s x the recorded time scale),
-    # so a clamp wait sees the frames it saw when recorded, not every frame up to the next command at once
-    cell_port = StreamReplay(tr["loadcell"].for_device("loadcell"), list(reps.values()), clock=clock,
-                             scale=cfg.clock.time_scale)
-    loadcell = _ReplayLoadCell(cell_port, stale_s=60.0)
-    return ReplayRig(Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp), reps)  # type: ignore[arg-type]
+    recorded = {dev: with_rows(Transcript.loads(reader.transcript(dev)), reader) for dev in kinds()}
+    replaying = Replaying(cfg, clock, recorded)
+    instruments = {name: kind.replay(getattr(cfg.instruments, name), replaying) for name, kind in kinds().items()}
+    return ReplayRig(Rig(cfg, clock, instruments), replaying.replayers)
 
 
 @dataclass

@@ -7,39 +7,27 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
     [sample.specimen]  name, length_m, width_m, thickness_m, clamp_area_m2, medium, temperature_C, batch, notes
     [sample.operator]  name, notes                                     (labrig.specimen; instead of the preset)
     [safety]           max_drive_V, max_current_A, max_force_N
-    [instruments.keyence]   address (pyserial URL or device path), dialect
-    [instruments.loadcell]  address
-    [instruments.clamp]     mode = "motor" (address) or "operator"
-    [instruments.impedance] address (VISA resource name), model ("IM3590", "E4990A" or "SIM-WIDE", the analyser of
-                            labrig's older simulator; required: drivers/analyser_models.py)
-    [instruments.daq]       address (gRPC host:port, or "local"), device, drive/voltage/current/displacement
-                            channels, current_gain_A_per_V, displacement_m_per_V, watchdog_s (rig seconds
-                            without a reset from the host before the DAQ puts 0 V on the drive by itself)
+    [instruments.<name>]    one table per instrument kind (labrig.instruments: the tables, what each holds)
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Any
 
-from pydantic import Field, StringConstraints, ValidationError
+from pydantic import Field, ValidationError, create_model
 
-from drivers.clamp import ClampController, MotorClamp, OperatorClamp
-from drivers.daq import DaqRig
-from drivers.daq_watchdog import DEFAULT_TIMEOUT_S as DEFAULT_WATCHDOG_S
 from drivers.errors import InstrumentError
 from drivers.instrument import Instrument
-from drivers import analyser_models
-from drivers.analysers import open_analyser
-from drivers.impedance_analyzer import ImpedanceAnalyzer
-from drivers.keyence import open_keyence
-from drivers.loadcell import LoadCell
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from labrig.errors import BadInput, validation_error
+from labrig.instrument_kind import InstrumentKind, Opening
+from labrig.instruments import KINDS
 from labrig.safe_read import read_text_file
-from labrig.validation import StrictModel, Text, matching
+from labrig.validation import StrictModel, Text
 from labrig.physics import presets
 from labrig.specimen import OperatorCfg, SpecimenCfg, sample_record, user_record
 from labrig.suspenders import SuspendCfg
@@ -49,11 +37,11 @@ from labrig.suspenders import SuspendCfg
 AO_RANGE_V = 10.0  # the DAQ's analog output range: no safety limit above what the drive can put out
 LOADCELL_CAPACITY_N = 98.0  # Dacell UMMA-K10
 MAX_RIG_FILE_BYTES = 1 << 20
-Address = Annotated[str, StringConstraints(min_length=1, max_length=512), matching(r"[^\x00-\x20\x7f]+", "contains a space or a control character")]
-# what pyvisa opens: TCPIP0::host::5025::SOCKET, TCPIP::host::inst0::INSTR, GPIB0::17::INSTR, USB0::...::INSTR, ASRL/dev/ttyUSB0::INSTR
-VisaResource = Annotated[str, StringConstraints(max_length=512), matching(
-    r"(?i:TCPIP|GPIB|USB|ASRL|VXI|PXI)[^\x00-\x20:]*::[^\x00-\x20\x7f]+", "not a VISA resource name (e.g. TCPIP::192.168.0.5::5025::SOCKET)")]
-Channel = Annotated[str, matching(r"[A-Za-z0-9_./-]{1,64}", "not a device or channel name (letters, digits, _ . / -)")]
+
+
+def kinds() -> dict[str, InstrumentKind]:
+    """The instrument kinds a rig file may hold (``labrig.instruments.KINDS``), in opening order: the drive first."""
+    return dict(KINDS)
 
 
 class _Strict(StrictModel):
@@ -83,62 +71,34 @@ class SampleCfg(_Strict):
     operator: OperatorCfg | None = None
 
 
-class KeyenceCfg(_Strict):
-    address: Address
-    dialect: Literal["LK-G", "LK-2000"] = "LK-G"
-
-
-class LoadCellCfg(_Strict):
-    address: Address
-
-
-class ClampCfg(_Strict):
-    mode: Literal["motor", "operator"] = "operator"
-    address: Address | None = None
-
-
-class ImpedanceCfg(_Strict):
-    address: VisaResource
-    # required: the model sets the range a plan is checked against before anything moves (an E4990A stops at 20 Hz)
-    model: Literal[tuple(analyser_models.MODELS)]  # type: ignore[valid-type]
-
-
-class DaqCfg(_Strict):
-    address: Address = "local"
-    device: Channel = "Dev1"
-    drive_channel: Channel = "ao0"
-    voltage_channel: Channel = "ai0"
-    current_channel: Channel = "ai1"
-    displacement_channel: Channel = "ai2"
-    current_gain_A_per_V: float = Field(1e-3, gt=0, le=100.0)  # a current amplifier or shunt: 1 pA/V .. 100 A/V
-    displacement_m_per_V: float = Field(1e-3, gt=0, le=1.0)  # the laser's analog output: mm per volt
-    watchdog_s: float = Field(DEFAULT_WATCHDOG_S, gt=0, allow_inf_nan=False, strict=True)
-
-
-class Instruments(_Strict):
-    keyence: KeyenceCfg
-    loadcell: LoadCellCfg
-    clamp: ClampCfg = ClampCfg()
-    impedance: ImpedanceCfg
-    daq: DaqCfg
-
-
 class RigFile(_Strict):
+    """A rig file. ``instruments`` holds one table per kind of ``kinds()`` (``rig_file_model`` types it)."""
+
     clock: ClockCfg = ClockCfg()
     sample: SampleCfg = SampleCfg()
     safety: SafetyCfg = SafetyCfg()
-    instruments: Instruments
+    instruments: Any
+
+
+@lru_cache(maxsize=8)
+def _rig_file_model(kinds: tuple[InstrumentKind, ...]) -> type[RigFile]:
+    tables: dict[str, Any] = {k.name: (k.config, ... if k.default is None else k.default) for k in kinds}
+    instruments = create_model("Instruments", __base__=_Strict, **tables)
+    return create_model("RigFile", __base__=RigFile, instruments=(instruments, ...))
+
+
+def rig_file_model() -> type[RigFile]:
+    """The rig file's model: ``RigFile`` with an ``[instruments.<name>]`` table for every registered kind."""
+    return _rig_file_model(tuple(kinds().values()))
 
 
 def parse_rig(data: dict[str, Any], source: str) -> RigFile:
     try:
-        cfg = RigFile.model_validate(data)
+        cfg = rig_file_model().model_validate(data)
     except ValidationError as exc:
         raise validation_error(exc, source) from None
     if cfg.sample.preset not in presets.names():
         raise BadInput(f"{source}: sample.preset: unknown preset {cfg.sample.preset!r} (known: {', '.join(presets.names())})")
-    if cfg.instruments.clamp.mode == "motor" and not cfg.instruments.clamp.address:
-        raise BadInput(f"{source}: instruments.clamp.address: required when mode = 'motor'")
     return cfg
 
 
@@ -148,21 +108,6 @@ def load_rig(path: str | Path) -> RigFile:
 
 
 ZERO_TOL_V = 0.02  # |drive read back| at or below this is 0 V (AI noise ~0.1 mV, 16 bits over ±10 V: 0.3 mV)
-STALE_RIG_S = 2.0  # a load cell with no valid frame for this many rig seconds is a fault...
-STALE_WALL_S = 0.05  # ... never fewer wall seconds (the host's scheduling: 50 rig s on a 1000x bench)...
-STALE_GRACE_WALL_S = 1.0  # ... and a stream that looks stale gets this long to show a frame (a stalled process:
-# 0.2 s faulted a seed001 run in 1 of 4 on this 2-core machine with the suite beside it, after a 0.25 s stall)
-REPLY_RIG_S = 5.0  # an ordinary instrument reply may take this many rig seconds...
-REPLY_WALL_S = 0.5  # ... never fewer wall seconds (a TCP/VISA round trip on a loaded host)
-SERIAL_REPLY_RIG_S = 0.5  # a serial instrument (laser, clamp motor) answers a short command within this
-
-
-def rig_timeout(clock: ScaledClock, rig_s: float, floor_wall_s: float) -> float:
-    """``rig_s`` seconds of the rig's clock as a wall-clock timeout, at least ``floor_wall_s``.
-
-    At 1x (a real bench) this is ``rig_s``; on a 1000x simulated bench the floor covers the host's own
-    latency, which the scaled clock does not slow down."""
-    return max(rig_s / clock.time_scale, floor_wall_s)
 
 
 @dataclass(frozen=True)
@@ -189,21 +134,36 @@ class SafeState:
 
 @dataclass
 class Rig:
-    """Open drivers + clock + limits. ``safe()`` puts the drive at 0 V before anything else."""
+    """Open drivers + clock + limits. ``safe()`` puts the drive at 0 V before anything else.
+
+    ``instruments``: every instrument by its rig-file name, in ``kinds()`` order (the drive first: the order
+    ``safe()`` and ``close()`` use). The protocols' roles read them by name: ``daq``, ``analyzer``, ``laser``,
+    ``loadcell``, ``clamp``."""
 
     config: RigFile
     clock: ScaledClock
-    daq: DaqRig
-    laser: Any
-    loadcell: LoadCell
-    analyzer: ImpedanceAnalyzer
-    clamp: ClampController
+    instruments: dict[str, Instrument] = field(default_factory=dict)
     transcript: Transcript = field(default_factory=Transcript)
 
     @property
-    def instruments(self) -> dict[str, Instrument]:
-        """Every instrument of the rig by its rig-file name, the drive first (the order ``safe()`` and ``close()`` use)."""
-        return {"daq": self.daq, "impedance": self.analyzer, "keyence": self.laser, "loadcell": self.loadcell, "clamp": self.clamp}
+    def daq(self) -> Any:  # drivers.daq.Daq
+        return self.instruments["daq"]
+
+    @property
+    def analyzer(self) -> Any:  # drivers.analysers: the model's driver
+        return self.instruments["impedance"]
+
+    @property
+    def laser(self) -> Any:  # drivers.keyence
+        return self.instruments["keyence"]
+
+    @property
+    def loadcell(self) -> Any:  # drivers.loadcell.LoadCell
+        return self.instruments["loadcell"]
+
+    @property
+    def clamp(self) -> Any:  # drivers.clamp: MotorClamp or OperatorClamp
+        return self.instruments["clamp"]
 
     @property
     def limits(self) -> SafetyCfg:
@@ -281,42 +241,18 @@ class Rig:
 
 
 def open_rig(cfg: RigFile, clock: ScaledClock | None = None, transcript: Transcript | None = None) -> Rig:
-    """Connect to every instrument of ``cfg`` (drivers record their traffic into ``transcript``)."""
+    """Connect to every instrument of ``cfg`` (drivers record their traffic into ``transcript``), in ``kinds()``
+    order; if one fails, those already open are closed again."""
     tr = transcript or Transcript()
     clock = clock or ScaledClock(cfg.clock.time_scale, cfg.clock.epoch_wall)
-    ins = cfg.instruments
-    opened: list[Any] = []
+    opening = Opening(cfg, clock, tr)
+    opened: dict[str, Instrument] = {}
     try:
-        d = ins.daq
-        daq = DaqRig(
-            device=d.device,
-            grpc_target=None if d.address == "local" else d.address,
-            drive_channel=d.drive_channel,
-            voltage_channel=d.voltage_channel,
-            current_channel=d.current_channel,
-            displacement_channel=d.displacement_channel,
-            current_gain_A_per_V=d.current_gain_A_per_V,
-            displacement_m_per_V=d.displacement_m_per_V,
-            transcript=tr,
-            watchdog_s=d.watchdog_s,
-            time_scale=clock.time_scale,
-        )
-        opened.append(daq)
-        analyzer = open_analyser(ins.impedance.address, ins.impedance.model, transcript=tr,
-                                                 timeout_s=rig_timeout(clock, REPLY_RIG_S, REPLY_WALL_S),
-                                                 sweep_timeout_s=rig_timeout(clock, 600.0, REPLY_WALL_S))
-        opened.append(analyzer)
-        serial_s = rig_timeout(clock, SERIAL_REPLY_RIG_S, REPLY_WALL_S)
-        laser = open_keyence(ins.keyence.address, dialect=ins.keyence.dialect, transcript=tr, timeout_s=serial_s)
-        opened.append(laser)
-        loadcell = LoadCell(ins.loadcell.address, transcript=tr, clock=clock, grace_wall_s=STALE_GRACE_WALL_S,
-                            stale_s=max(STALE_RIG_S, STALE_WALL_S * clock.time_scale))
-        opened.append(loadcell)
-        clamp = (MotorClamp(ins.clamp.address, transcript=tr, timeout_s=serial_s, max_force_N=cfg.safety.max_force_N)
-                 if ins.clamp.mode == "motor" else OperatorClamp())
-        return Rig(cfg, clock, daq, laser, loadcell, analyzer, clamp, tr)
+        for name, kind in kinds().items():
+            opened[name] = kind.open(getattr(cfg.instruments, name), opening)
+        return Rig(cfg, clock, opened, tr)
     except BaseException:
-        for dev in reversed(opened):
+        for dev in reversed(opened.values()):
             try:
                 dev.close()
             except Exception:

@@ -29,7 +29,8 @@ from labrig import __version__
 from labrig.errors import BadInput, SafetyTrip
 from labrig.events import Block, Event, Pause, RunStart, RunStop, StepEnd, StepPlan, StepStart, Subscriber, Transcript, new_uid
 from labrig.limits import GARBLED_WINDOW_FRAMES, check_daq_block, check_force, check_impedance, check_laser, check_stream
-from labrig.rig import REPLY_RIG_S, REPLY_WALL_S, Rig, rig_timeout
+from labrig.instrument_kind import REPLY_RIG_S, REPLY_WALL_S, rig_timeout
+from labrig.rig import Rig
 from labrig.suspenders import PauseControl, SuspendCfg, Suspenders, wait_pause_answer
 from protocols.registry import LoadedProtocol
 from protocols.steps import Impedance, Record, SetClamp, Settle, Step, peak_drive

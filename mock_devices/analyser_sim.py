@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.scpi_server import Request, ScpiError, ScpiServer
 
 FAULTS = ("disconnect", "timeout", "garbage", "error", "overrange")
@@ -41,7 +41,7 @@ def one_arg(r: Request) -> str:
 class ScpiAnalyserSim:
     """Base of the simulated analysers; a subclass registers its commands in ``_register``."""
 
-    def __init__(self, bench: BenchView, *, port: int = 0, name: str = "impedance-sim", idn: str,
+    def __init__(self, bench: WorldView, *, port: int = 0, name: str = "impedance-sim", idn: str,
                  options: str = "0", cycles: float = 3.0, min_point_s: float = 0.05):
         self.bench, self.idn = bench, idn
         self.cycles, self.min_point_s = cycles, min_point_s

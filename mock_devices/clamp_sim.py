@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import SimDevice
+from mock_devices.world_api import WorldView
+from mock_devices.serial_server import SimSerialDevice, serve_stand_in
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
-class ClampSim(SimDevice):
-    def __init__(self, bench: BenchView, seed: int = 0, max_force_N: float = 98.0):
+class ClampSim(SimSerialDevice):
+    def __init__(self, bench: WorldView, seed: int = 0, max_force_N: float = 98.0):
         super().__init__(seed)
         self.bench = bench
         self.max_force_N = max_force_N
@@ -33,3 +34,8 @@ class ClampSim(SimDevice):
             self.bench.set_clamp_force(f)
             return b"OK\r"
         return f"ER,{text[:2]},01\r".encode()
+
+
+@stands_in("clamp")
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
+    return serve_stand_in(ClampSim(world, seed=opts.seed + 2), opts, mode="motor")

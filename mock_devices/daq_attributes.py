@@ -10,14 +10,14 @@ from __future__ import annotations
 from typing import Any, Callable
 
 from mock_devices.daq_errors import ERR, DaqmxError
-from mock_devices.daq_sim import FINITE, RISING, SimDevice
+from mock_devices.daq_sim import FINITE, RISING, SimDaqDevice
 
 DRIVER_VERSION = (25, 5, 0)  # NI-DAQmx version the server claims (>= 24.5: reads use DefaultNumberOfSamplesToRead)
 AI_VOLTAGE, CHAN_AI, CHAN_AO, DO_NOT_OVERWRITE = 10322, 10100, 10102, 10159
 SAMPLE_CLOCK, ON_DEMAND, DIGITAL_EDGE, TRIG_NONE = 10388, 10390, 10150, 10230
 
 
-def getters(dev: SimDevice) -> dict[tuple[str, int], Callable[..., Any]]:
+def getters(dev: SimDaqDevice) -> dict[tuple[str, int], Callable[..., Any]]:
     """(scope, attribute id) -> getter(task or device name, channel). Ids are nidaqmx's."""
     t = dev.task
     names = lambda n: ", ".join(c.name for c in t(n).chans)  # noqa: E731
@@ -85,7 +85,7 @@ def _max_rate(kind: str, n_chans: int) -> float:
     return 2.86e6 if n_chans <= 1 else 2.0e6
 
 
-def _source(dev: SimDevice, trigger: str | None) -> str:
+def _source(dev: SimDaqDevice, trigger: str | None) -> str:
     """The start trigger source as DAQmx reads it back: fully qualified when it names a terminal of the device."""
     if not trigger:
         return ""
@@ -95,13 +95,13 @@ def _source(dev: SimDevice, trigger: str | None) -> str:
         return trigger
 
 
-def _wd_expired(dev: SimDevice, name: str) -> bool:
+def _wd_expired(dev: SimDaqDevice, name: str) -> bool:
     wd = dev.watchdog_of(name)
     dev.watchdog.poll()
     return wd.expired
 
 
-def _wd_state(dev: SimDevice, name: str, line: str) -> tuple[float, int]:
+def _wd_state(dev: SimDaqDevice, name: str, line: str) -> tuple[float, int]:
     (phys,) = dev._parse_phys(line, "ao")
     state = dev.watchdog_of(name).states.get(phys)
     if state is None:
@@ -109,7 +109,7 @@ def _wd_state(dev: SimDevice, name: str, line: str) -> tuple[float, int]:
     return state
 
 
-def setters(dev: SimDevice) -> dict[tuple[str, int], Callable[[str, Any], None]]:
+def setters(dev: SimDaqDevice) -> dict[tuple[str, int], Callable[[str, Any], None]]:
     def read_all(n: str, v: Any) -> None:
         dev.task(n).read_all_avail = bool(v)
 

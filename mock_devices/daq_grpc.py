@@ -1,7 +1,7 @@
 """A simulated NI gRPC Device Server for NI-DAQmx: the unmodified ``nidaqmx`` package talks to it.
 
 ``SimDaq`` serves service ``nidaqmx_grpc.NiDAQmx`` (the stubs that ship in the nidaqmx wheel) on
-127.0.0.1, backed by ``mock_devices.daq_sim.SimDevice``. Errors travel as the real server sends them:
+127.0.0.1, backed by ``mock_devices.daq_sim.SimDaqDevice``. Errors travel as the real server sends them:
 gRPC status UNKNOWN with trailing metadata ``ni-error`` (the DAQmx code) and, for reads,
 ``ni-samps-per-chan-read``; nidaqmx turns these into ``DaqError`` / ``DaqReadError``.
 
@@ -32,10 +32,11 @@ from nidaqmx._stubs import nidaqmx_pb2 as pb
 from nidaqmx._stubs import nidaqmx_pb2_grpc as pb_grpc
 from scipy.signal import lfilter
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.daq_attributes import getters, setters
 from mock_devices.daq_errors import ERR_MESSAGES, DaqmxError
-from mock_devices.daq_sim import RISING, SimDevice
+from mock_devices.daq_sim import RISING, SimDaqDevice
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 GRPC_OPTIONS = [("grpc.max_receive_message_length", -1), ("grpc.max_send_message_length", -1)]
 FAULTS = ("disconnect", "timeout", "overflow", "error")
@@ -48,7 +49,7 @@ ACQUIRED_INTO_BUFFER = 1  # nidaqmx.constants.EveryNSamplesEventType
 class DaqServicer(pb_grpc.NiDAQmxServicer):
     """The RPCs an nidaqmx Task uses for AI/AO voltage, sample clock timing, start triggers, read and write."""
 
-    def __init__(self, device: SimDevice):
+    def __init__(self, device: SimDaqDevice):
         self.dev = device
         self._get = getters(device)
         self._set = setters(device)
@@ -235,7 +236,7 @@ for _rpc in pb.DESCRIPTOR.services_by_name["NiDAQmx"].methods_by_name:
         setattr(DaqServicer, _rpc, _reset_rpc(_rpc))
 
 
-def _guarded(dev: SimDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
+def _guarded(dev: SimDaqDevice, fn: Callable[..., Any]) -> Callable[..., Any]:
     """Report ``DaqmxError`` the way NI's server does; apply the one-shot injected error first."""
 
     @functools.wraps(fn)
@@ -265,9 +266,9 @@ class _GuardedServicer(DaqServicer):
 class SimDaq:
     """The simulated DAQ on a loopback gRPC server. ``address`` is "127.0.0.1:PORT" once started."""
 
-    def __init__(self, bench: BenchView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
+    def __init__(self, bench: WorldView, device: str = "SimDev1", product_type: str = "PXIe-6361", port: int = 0,
                  interceptors: Sequence[grpc.ServerInterceptor] = (), max_workers: int = 16, **device_kw: Any):
-        self.device = SimDevice(bench, device, product_type, **device_kw)
+        self.device = SimDaqDevice(bench, device, product_type, **device_kw)
         self._port, self._interceptors, self._workers = port, tuple(interceptors), max_workers
         self._server: grpc.Server | None = None
         self._lock = threading.Lock()
@@ -335,6 +336,21 @@ class SimDaq:
 
     def __exit__(self, *exc: object) -> None:
         self.stop()
+
+
+# the bench's analog scaling: 10 mA/V current amplifier, laser analog 2 mm/V (+-20 mm on +-10 V)
+CURRENT_GAIN_A_PER_V = 1e-2
+DISPLACEMENT_M_PER_V = 2e-3
+
+
+@stands_in("daq")
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
+    sim = SimDaq(world, current_gain_A_per_V=CURRENT_GAIN_A_PER_V, displacement_m_per_V=DISPLACEMENT_M_PER_V,
+                 seed=opts.seed + 3).start()
+    table = {"address": sim.address, "device": sim.device.name, "drive_channel": "ao0", "voltage_channel": "ai0",
+             "current_channel": "ai1", "displacement_channel": "ai2",
+             "current_gain_A_per_V": CURRENT_GAIN_A_PER_V, "displacement_m_per_V": DISPLACEMENT_M_PER_V}
+    return Served(sim, table, sim.stop)
 
 
 class StandInBench:

@@ -3,7 +3,7 @@
 The device model behind ``mock_devices.daq_grpc``: it knows DAQmx semantics (task states and auto-start,
 finite and continuous sample clocks, digital-edge start triggers on relative or absolute terminals, the
 input buffer and its overflow, partial reads, the watchdog timer of ``mock_devices.daq_watchdog``) but
-nothing of gRPC. One module for one card model (hence its length). The analog world comes from a bench (``mock_devices.bench_api.BenchView``): when an AI task
+nothing of gRPC. One module for one card model (hence its length). The analog world comes from a bench (``mock_devices.world_api.WorldView``): when an AI task
 runs, the device asks ``bench.run_record`` for each block of samples, feeding it what AO puts out at
 those instants, and turns volts, amps and metres into AI voltages.
 
@@ -23,7 +23,7 @@ from typing import Callable
 
 import numpy as np
 
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.daq_errors import ERR, ERR_MESSAGES, DaqmxError  # noqa: F401 (re-exported)
 from mock_devices.daq_watchdog import Watchdog, WatchdogUnit
 
@@ -85,7 +85,7 @@ def _default_input_buffer(rate: float) -> int:
     return 1_000_000
 
 
-class SimDevice:
+class SimDaqDevice:
     """One simulated DAQ card with its tasks. Thread-safe; blocking calls never hold the lock while waiting.
 
     Causality: an AI sample is computed from what AO puts out at that sample's instant. Samples are computed
@@ -95,7 +95,7 @@ class SimDevice:
     are computed again from the new one when read.
     """
 
-    def __init__(self, bench: BenchView, name: str = "SimDev1", product_type: str = "PXIe-6361",
+    def __init__(self, bench: WorldView, name: str = "SimDev1", product_type: str = "PXIe-6361",
                  drive_channel: str = "ao0", current_gain_A_per_V: float = 1e-3, displacement_m_per_V: float = 1e-3,
                  noise_V: float = 1e-4, seed: int | None = 0, n_ai: int = 16, n_ao: int = 2, block_s: float = 1.0):
         self.bench, self.name, self.product_type = bench, name, product_type

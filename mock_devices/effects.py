@@ -19,7 +19,7 @@ from scipy import signal
 
 from labrig.physics import hammerstein, timeresp, transfer
 from labrig.physics.params import Specimen
-from mock_devices.world import Bench, Effect, RecordWindow
+from mock_devices.world import World, Effect, RecordWindow
 
 
 class WindowEffect(Effect):
@@ -27,13 +27,13 @@ class WindowEffect(Effect):
 
     order = 50
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         """New (displacement, current) over the window."""
         return w.displacement, w.current
 
-    def outputs(self, out: dict[str, np.ndarray], t: np.ndarray, v: np.ndarray, bench: Bench) -> dict[str, np.ndarray]:
+    def outputs(self, out: dict[str, np.ndarray], t: np.ndarray, v: np.ndarray, bench: World) -> dict[str, np.ndarray]:
         w = bench.window
-        assert w is not None, "outputs() is called by Bench.run_record after it sets the window"
+        assert w is not None, "outputs() is called by World.run_record after it sets the window"
         d1, c1 = self.transform(w, bench)
         # add only this effect's change, so changes other (non-window) effects made to `out` survive
         dd, dc = w.record(d1 - w.displacement), w.record(c1 - w.current)
@@ -59,10 +59,10 @@ class FaradaicCurrent(WindowEffect):
     def i_nl(self, v: np.ndarray) -> np.ndarray:
         return hammerstein.LAWS[self.law].i_nl(np.asarray(v, float), {"g1": 0.0, **self.params})
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         return w.displacement, w.current + self.i_nl(w.u)
 
-    def impedance(self, z: np.ndarray, f: np.ndarray, bench: Bench) -> np.ndarray:
+    def impedance(self, z: np.ndarray, f: np.ndarray, bench: World) -> np.ndarray:
         h = 1e-4  # the analyser's bias is 0 V in every protocol, so the conductance is the slope at 0
         g0 = float((self.i_nl(np.array([h])) - self.i_nl(np.array([-h])))[0] / (2 * h))
         return 1.0 / (1.0 / z + g0)
@@ -108,7 +108,7 @@ class Hysteresis(WindowEffect):
         r = self.r_max * (np.arange(self.n_plays) + 0.5) / self.n_plays
         return (1 - self.h) * u + self.h * play(u, r).mean(axis=1)
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         du = self.gamma(w.u) - w.u
         sp = w.specimen
         return w.displacement + timeresp.simulate(lambda s: transfer.displacement_tf(s, sp), du, w.fs), w.current
@@ -134,7 +134,7 @@ class StrainResistance(WindowEffect):
         e = disp * sp.geometry.thickness / sp.x_sensor**2  # kappa h / 2 with kappa = 2 delta / x^2
         return 0.5 * (self.gauge_pos * np.clip(e, 0, None) + self.gauge_neg * np.clip(-e, 0, None))
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         sp, k = w.specimen, 0.01
 
         def at(scale: float) -> Specimen:
@@ -169,7 +169,7 @@ class BackRelaxation(WindowEffect):
     name = "back_relaxation"
     order = 30
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         return w.displacement - self.K2 * _lowpass(w.displacement, self.tau2, w.fs), w.current
 
 
@@ -182,7 +182,7 @@ class Dehydration(Effect):
     beta: float
     name = "dehydration"
 
-    def specimen(self, sp: Specimen, t: float, bench: Bench) -> Specimen:
+    def specimen(self, sp: Specimen, t: float, bench: World) -> Specimen:
         t = max(t, 0.0)
         a, c = math.exp(-t / self.tau), math.exp(-self.beta * t / self.tau)
         return sp.with_(
@@ -204,7 +204,7 @@ class ClampRelaxation(Effect):
     servo_s: float = 60.0
     name = "clamp_relaxation"
 
-    def force(self, f: float, t: float, bench: Bench) -> float:
+    def force(self, f: float, t: float, bench: World) -> float:
         held = t - bench.clamp_set_at - self.servo_s
         return f * (1.0 - self.r * -math.expm1(-max(held, 0.0) / self.tau))
 
@@ -216,7 +216,7 @@ class SensorOffset(Effect):
     fraction: float
     name = "sensor_offset"
 
-    def specimen(self, sp: Specimen, t: float, bench: Bench) -> Specimen:
+    def specimen(self, sp: Specimen, t: float, bench: World) -> Specimen:
         return sp.with_(sensor_x=self.fraction * sp.geometry.length)
 
 
@@ -239,7 +239,7 @@ class LargeDeflection(WindowEffect):
         arc = np.where(small, ell * th / 2, ell * (1 - np.cos(ths)) / ths)
         return arc + (x - ell) * np.sin(th)
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         return self.measured(w.displacement, w.specimen.x_sensor), w.current
 
 
@@ -255,7 +255,7 @@ class TimeDelay(WindowEffect):
     name = "time_delay"
     order = 50
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         x = w.displacement
         n = x.size
         ramp = x[0] + (x[-1] - x[0]) * np.arange(n) / max(n - 1, 1)
@@ -283,7 +283,7 @@ class MainsPickup(WindowEffect):
         w = 2 * np.pi * self.f_line
         return amp * (np.sin(w * t + p1) + self.third * np.sin(3 * w * t + p3))
 
-    def transform(self, w: RecordWindow, bench: Bench) -> tuple[np.ndarray, np.ndarray]:
+    def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         t, p = w.t, self.phases
         return w.displacement + self._tone(t, self.amp_disp, p[0], p[1]), w.current + self._tone(t, self.amp_cur, p[2], p[3])
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from drivers import analyser_models
 from mock_devices.analyser_sim import ScpiAnalyserSim, one_arg, word
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
 from mock_devices.scpi_server import Request, ScpiError, parse_bool, parse_number
 
 MODES = {"LCR": "LCR", "ANAL": "ANALYZER", "ANALYZER": "ANALYZER", "CONT": "CONTINUOUS", "CONTINUOUS": "CONTINUOUS"}
@@ -51,7 +51,7 @@ def hioki_number(x: float) -> str:
 class Im3590Sim(ScpiAnalyserSim):
     """The IM3590 on 127.0.0.1; ``resource_name`` is the pyvisa-py SOCKET resource the driver opens."""
 
-    def __init__(self, bench: BenchView, *, port: int = 0, cycles: float = 3.0, min_point_s: float = 0.05):
+    def __init__(self, bench: WorldView, *, port: int = 0, cycles: float = 3.0, min_point_s: float = 0.05):
         m = analyser_models.get("IM3590")
         self.freq_range_Hz, self.ac_range_V, self.bias_range_V = m.freq_range_Hz, m.ac_range_V, m.bias_range_V
         self.measurements: list[dict[str, float]] = []  # what each measurement applied, for tests

@@ -32,8 +32,10 @@ import numpy as np
 
 from drivers import analyser_models
 from mock_devices.analyser_sim import FAULTS, GARBAGE, OVERLOAD, ScpiAnalyserSim, num, one_arg, word
-from mock_devices.bench_api import BenchView
+from mock_devices.world_api import WorldView
+from mock_devices.im3590_sim import Im3590Sim
 from mock_devices.scpi_server import Request, ScpiError, parse_bool, parse_number
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 __all__ = ["FAULTS", "GARBAGE", "OVERLOAD", "ImpedanceAnalyzerSim", "DemoBench", "VirtualClock"]
 
@@ -57,7 +59,7 @@ _FORMATTED: dict[str, Callable[[np.ndarray, np.ndarray], np.ndarray]] = {
 class ImpedanceAnalyzerSim(ScpiAnalyserSim):
     """The E4990A (or SIM-WIDE) analyser on a loopback TCP port; ``resource_name`` is what the driver opens."""
 
-    def __init__(self, bench: BenchView, *, port: int = 0, model: str = "SIM-WIDE", idn: str | None = None,
+    def __init__(self, bench: WorldView, *, port: int = 0, model: str = "SIM-WIDE", idn: str | None = None,
                  freq_range_Hz: tuple[float, float] | None = None, ac_range_V: tuple[float, float] | None = None,
                  bias_range_V: tuple[float, float] | None = None, max_points: int = 1601,
                  max_segments: int = 201, cycles: float = 3.0, min_point_s: float = 0.05):
@@ -345,6 +347,15 @@ def record(directory: str | Path) -> list[Path]:
         transcript.save(path)
         paths.append(path)
     return paths
+
+
+@stands_in("impedance")
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
+    """The analyser of ``opts.impedance_model``: the IM3590's own dialect, or the E4990A-style SCPI of the others."""
+    model = analyser_models.get(opts.impedance_model).name
+    sim = Im3590Sim(world) if model == "IM3590" else ImpedanceAnalyzerSim(world, model=model)
+    sim.start()
+    return Served(sim, {"address": sim.resource_name, "model": model}, sim.stop)
 
 
 def main(argv: list[str] | None = None) -> int:

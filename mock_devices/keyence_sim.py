@@ -23,8 +23,9 @@ from __future__ import annotations
 from typing import Callable
 
 from drivers.keyence_dialect import COMMUNICATION, GENERAL, LKG_SETTINGS, find, format_reading, header_of
-from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.world_api import WorldView
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimSerialDevice, serve, serve_stand_in, sim_main
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 
 class _Refused(Exception):
@@ -32,12 +33,12 @@ class _Refused(Exception):
         self.code = code
 
 
-class KeyenceSim(SimDevice):
+class KeyenceSim(SimSerialDevice):
     """Protocol layer of the LK controller over ``bench.displacement_now()`` (m, + towards the head)."""
 
     FAULTS = COMMON_FAULTS | {"error", "overrange", "invalid"}
 
-    def __init__(self, bench: BenchView, *, range_mm: float = 5.0, resolution_mm: float = 1e-4, seed: int = 0):
+    def __init__(self, bench: WorldView, *, range_mm: float = 5.0, resolution_mm: float = 1e-4, seed: int = 0):
         super().__init__(seed)
         self.bench = bench
         self.range_mm = range_mm
@@ -185,6 +186,11 @@ def record_demo(path: str) -> int:
             pass
     tr.save(path)
     return len(tr)
+
+
+@stands_in("keyence")
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
+    return serve_stand_in(KeyenceSim(world, range_mm=20.0, seed=opts.seed), opts, dialect="LK-G")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -18,13 +18,14 @@ Regenerate the recorded traffic the tests replay::
 from __future__ import annotations
 
 
-from mock_devices.bench_api import BenchView
-from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimDevice, serve, sim_main
+from mock_devices.world_api import WorldView
+from mock_devices.serial_server import COMMON_FAULTS, FixedBench, SimSerialDevice, serve, serve_stand_in, sim_main
+from mock_devices.stand_ins import Served, SimOptions, stands_in
 
 G_N = 9.80665  # N per kgf
 
 
-class LoadCellSim(SimDevice):
+class LoadCellSim(SimSerialDevice):
     """Protocol layer of the indicator over ``bench.clamp_force_now()`` (N)."""
 
     FAULTS = COMMON_FAULTS | {"overrange", "noise"}
@@ -33,7 +34,7 @@ class LoadCellSim(SimDevice):
 
     def __init__(
         self,
-        bench: BenchView,
+        bench: WorldView,
         *,
         frames_per_s: float = 20.0,
         max_wall_fps: float = 200.0,
@@ -105,6 +106,11 @@ def record_demo(path: str) -> int:
         lc.wait_stable(0.0, 0.05, 0.05, 2.0, clock)
     tr.save(path)
     return len(tr)
+
+
+@stands_in("loadcell")
+def _stand_in(world: WorldView, opts: SimOptions) -> Served:
+    return serve_stand_in(LoadCellSim(world, seed=opts.seed + 1), opts)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -2,9 +2,9 @@
 
 Two pieces:
 
-* ``SimDevice``: the byte-level behaviour of one instrument (request lines in, reply bytes out,
+* ``SimSerialDevice``: the byte-level behaviour of one instrument (request lines in, reply bytes out,
   optional unsolicited stream) plus faults on demand (``inject`` / ``clear_fault``).
-* ``PtySerialServer`` / ``TcpSerialServer``: carry a ``SimDevice`` on a real transport, one thread
+* ``PtySerialServer`` / ``TcpSerialServer``: carry a ``SimSerialDevice`` on a real transport, one thread
   each, ``start()``/``stop()`` idempotent, context managers, ``.address`` for pyserial.
 
 The client cannot tell these from a real RS-232 port: a pty slave (``/dev/pts/N``) is opened with
@@ -22,7 +22,9 @@ import socket
 import threading
 import time
 import tty
-from typing import Callable, Literal
+from typing import Any, Callable, Literal
+
+from mock_devices.stand_ins import Served, SimOptions
 
 COMMON_FAULTS = frozenset({"disconnect", "timeout", "garbage"})
 # Bytes a TCP client has not read yet, per client. A serial line has no flow control here: like a UART's buffer,
@@ -61,7 +63,7 @@ class FixedBench:
         return self.force_N
 
 
-class SimDevice:
+class SimSerialDevice:
     """Byte-level behaviour of a simulated serial instrument, with faults on demand.
 
     Subclasses implement ``respond(line)`` for one request line (terminator stripped; CR, LF or
@@ -142,7 +144,7 @@ class SimDevice:
 class _Server:
     """One thread multiplexing the transport's fds with ``select``; a pipe wakes it for stop/drop."""
 
-    def __init__(self, device: SimDevice):
+    def __init__(self, device: SimSerialDevice):
         self.device = device
         self._thread: threading.Thread | None = None
         self._stop = threading.Event()
@@ -254,7 +256,7 @@ class PtySerialServer(_Server):
     The ``disconnect`` fault closes the master (the client sees EIO); ``clear_fault`` opens a new pty.
     """
 
-    def __init__(self, device: SimDevice):
+    def __init__(self, device: SimSerialDevice):
         super().__init__(device)
         self._master = self._slave = -1
         self._path = ""
@@ -311,7 +313,7 @@ class TcpSerialServer(_Server):
     ``disconnect`` fault is on, connections are closed at once.
     """
 
-    def __init__(self, device: SimDevice, port: int = 0):
+    def __init__(self, device: SimSerialDevice, port: int = 0):
         super().__init__(device)
         self._port = port
         self._listener: socket.socket | None = None
@@ -410,13 +412,20 @@ class TcpSerialServer(_Server):
         pass  # the listener never closed
 
 
-def serve(device: SimDevice, transport: Literal["pty", "tcp"] = "tcp", port: int = 0) -> _Server:
+def serve(device: SimSerialDevice, transport: Literal["pty", "tcp"] = "tcp", port: int = 0) -> _Server:
     """Start ``device`` on a new server of the given transport and return the server."""
     if transport == "pty":
         return PtySerialServer(device).start()
     if transport == "tcp":
         return TcpSerialServer(device, port).start()
     raise ValueError(f"transport must be 'pty' or 'tcp', not {transport!r}")
+
+
+def serve_stand_in(device: SimSerialDevice, opts: SimOptions, **table: Any) -> Served:
+    """A serial simulator's stand-in on the simulated bench (``mock_devices.stand_ins``): served on the options'
+    transport; its rig-file table is its address plus ``table``."""
+    srv = serve(device, opts.transport)  # type: ignore[arg-type]
+    return Served(device, {"address": srv.address, **table}, srv.stop)
 
 
 def _interrupt(signum: int, frame: object) -> None:
@@ -429,7 +438,7 @@ def sim_main(
     prog: str,
     doc: str,
     record: Callable[[str], int],
-    make_device: Callable[[float], SimDevice],
+    make_device: Callable[[float], SimSerialDevice],
     value_flag: str,
     default_value: float,
 ) -> int:

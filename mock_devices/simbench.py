@@ -1,53 +1,50 @@
 """Every simulated instrument, on loopback, over one simulated bench: what ``labrig sim`` serves and what
-``labrig run --sim`` starts in-process. Returns the instruments' addresses in the rig-file layout."""
+``labrig run --sim`` starts in-process. Returns the instruments' addresses in the rig-file layout.
+
+Which instruments: every stand-in registered by its simulator's own module (``mock_devices.stand_ins``).
+"""
 
 from __future__ import annotations
 
 from typing import Any
 
-from mock_devices.clamp_sim import ClampSim
-from mock_devices.daq_grpc import SimDaq
 from drivers import analyser_models
-from mock_devices.im3590_sim import Im3590Sim
-from mock_devices.impedance_sim import ImpedanceAnalyzerSim
-from mock_devices.keyence_sim import KeyenceSim
-from mock_devices.loadcell_sim import LoadCellSim
-from mock_devices.serial_server import serve
-from mock_devices.world import Bench
-
-# The bench's analog scaling: 10 mA/V current amplifier, laser analog 2 mm/V (+-20 mm on +-10 V).
-CURRENT_GAIN_A_PER_V = 1e-2
-DISPLACEMENT_M_PER_V = 2e-3
+from mock_devices.stand_ins import Served, SimOptions, stand_ins
+from mock_devices.world import World
 
 
 class SimulatedInstruments:
-    """Start/stop the simulated laser, load cell, clamp motor, impedance analyser and DAQ on 127.0.0.1."""
+    """Start/stop every simulated instrument (laser, load cell, clamp motor, impedance analyser, DAQ...) on
+    127.0.0.1. Once started (and after they stop), each simulator is ``sims.<kind>`` (``sims.daq``, ``sims.clamp``...)."""
 
-    def __init__(self, bench: Bench, serial_transport: str = "tcp", seed: int = 0,
+    def __init__(self, bench: World, serial_transport: str = "tcp", seed: int = 0,
                  impedance_model: str = analyser_models.DEFAULT_MODEL):
         self.bench = bench
         self.transport = serial_transport
-        self.keyence = KeyenceSim(bench, range_mm=20.0, seed=seed)
-        self.loadcell = LoadCellSim(bench, seed=seed + 1)
-        self.clamp = ClampSim(bench, seed=seed + 2)
         self.impedance_model = analyser_models.get(impedance_model).name
-        self.impedance = Im3590Sim(bench) if impedance_model == "IM3590" else ImpedanceAnalyzerSim(bench, model=impedance_model)
-        self.daq = SimDaq(bench, current_gain_A_per_V=CURRENT_GAIN_A_PER_V, displacement_m_per_V=DISPLACEMENT_M_PER_V, seed=seed + 3)
-        self._servers: list[Any] = []
+        self.options = SimOptions(serial_transport, seed, impedance_model)
+        self.served: dict[str, Served] = {}  # kept after stop(): tests read the simulators' final state
+        self._running: list[Served] = []
+
+    def __getattr__(self, kind: str) -> Any:
+        served = self.__dict__.get("served", {})
+        if kind in served:
+            return served[kind].sim
+        raise AttributeError(f"{type(self).__name__} has no attribute {kind!r} (no simulator of that kind is running)")
 
     def start(self) -> "SimulatedInstruments":
-        for dev in (self.keyence, self.loadcell, self.clamp):
-            self._servers.append(serve(dev, self.transport))
-        self.impedance.start()
-        self.daq.start()
+        try:
+            for kind, stand_in in stand_ins().items():
+                self.served[kind] = stand_in(self.bench, self.options)
+                self._running.append(self.served[kind])
+        except BaseException:
+            self.stop()
+            raise
         return self
 
     def stop(self) -> None:
-        for srv in self._servers:
-            srv.stop()
-        self._servers.clear()
-        self.impedance.stop()
-        self.daq.stop()
+        while self._running:
+            self._running.pop().stop()
 
     def __enter__(self) -> "SimulatedInstruments":
         return self.start()
@@ -57,20 +54,4 @@ class SimulatedInstruments:
 
     def rig_tables(self) -> dict[str, Any]:
         """The ``[instruments.*]`` tables of a rig file pointing at these simulators."""
-        keyence, loadcell, clamp = (s.address for s in self._servers)
-        return {
-            "keyence": {"address": keyence, "dialect": "LK-G"},
-            "loadcell": {"address": loadcell},
-            "clamp": {"mode": "motor", "address": clamp},
-            "impedance": {"address": self.impedance.resource_name, "model": self.impedance_model},
-            "daq": {
-                "address": self.daq.address,
-                "device": self.daq.device.name,
-                "drive_channel": "ao0",
-                "voltage_channel": "ai0",
-                "current_channel": "ai1",
-                "displacement_channel": "ai2",
-                "current_gain_A_per_V": CURRENT_GAIN_A_PER_V,
-                "displacement_m_per_V": DISPLACEMENT_M_PER_V,
-            },
-        }
+        return {kind: dict(served.table) for kind, served in self.served.items()}

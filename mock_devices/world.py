@@ -20,7 +20,7 @@ import numpy as np
 from labrig.physics import impedance as imp
 from labrig.physics import presets, timeresp, transfer
 from labrig.physics.params import Specimen
-from mock_devices.bench_api import SimClock as Clock
+from mock_devices.world_api import SimClock as Clock
 
 
 @dataclass
@@ -39,21 +39,21 @@ class Effect:
 
     name = "none"
 
-    def specimen(self, sp: Specimen, t: float, bench: "Bench") -> Specimen:
+    def specimen(self, sp: Specimen, t: float, bench: "World") -> Specimen:
         return sp
 
-    def drive(self, v: np.ndarray, t: np.ndarray, bench: "Bench") -> np.ndarray:
+    def drive(self, v: np.ndarray, t: np.ndarray, bench: "World") -> np.ndarray:
         """The voltage the strip sees, given the commanded drive (before the linear model)."""
         return v
 
-    def outputs(self, out: dict[str, np.ndarray], t: np.ndarray, v: np.ndarray, bench: "Bench") -> dict[str, np.ndarray]:
+    def outputs(self, out: dict[str, np.ndarray], t: np.ndarray, v: np.ndarray, bench: "World") -> dict[str, np.ndarray]:
         """Measured signals after the linear model (current_A, displacement_m)."""
         return out
 
-    def force(self, f: float, t: float, bench: "Bench") -> float:
+    def force(self, f: float, t: float, bench: "World") -> float:
         return f
 
-    def impedance(self, z: np.ndarray, f: np.ndarray, bench: "Bench") -> np.ndarray:
+    def impedance(self, z: np.ndarray, f: np.ndarray, bench: "World") -> np.ndarray:
         return z
 
 
@@ -103,7 +103,7 @@ class _Trace:
     displacement: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
 
-class Bench:
+class World:
     """The simulated bench. Thread-safe: instruments run on their own server threads."""
 
     def __init__(
@@ -176,7 +176,7 @@ class Bench:
 
     # ---------------------------------------------------------------------------------- signals
     def run_record(self, t0: float, fs: float, drive_V: np.ndarray) -> dict[str, np.ndarray]:
-        """Apply ``drive_V`` from ``t0`` at ``fs``; return voltage_V, current_A, displacement_m (bench_api)."""
+        """Apply ``drive_V`` from ``t0`` at ``fs``; return voltage_V, current_A, displacement_m (world_api)."""
         drive = np.asarray(drive_V, float)
         n = drive.size
         t = t0 + np.arange(n) / fs

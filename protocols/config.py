@@ -13,6 +13,7 @@ from __future__ import annotations
 from pydantic import ConfigDict, Field, model_validator
 
 from drivers.impedance_analyzer import MAX_LIST_POINTS
+from labrig.records import RecordKind
 from labrig.validation import STRICT, StrictModel
 
 # the bench's limits (docs/input_validation.md says where each comes from)
@@ -144,7 +145,7 @@ class MultisineSettings(Strict):
 
 class AmplitudeSeriesSettings(Strict):
     amplitudes_V: list[float] = Field(default=[0.25, 0.5, 1.0, 1.5], min_length=2, max_length=100)
-    test: str = Field("harmonic", pattern="^(harmonic|step|multisine)$")
+    test: str = Field(RecordKind.HARMONIC.value, pattern=f"^({RecordKind.HARMONIC}|{RecordKind.STEP}|{RecordKind.MULTISINE})$")
     frequency_Hz: float = Field(0.5, gt=0, le=FS_MAX_HZ / 2.5)
     cycles: float = Field(4.0, gt=0, le=1e5)
     fs_Hz: float = _fs(500.0)
@@ -155,10 +156,10 @@ class AmplitudeSeriesSettings(Strict):
         bad = [a for a in self.amplitudes_V if not -AO_RANGE_V <= a <= AO_RANGE_V]
         if bad:
             raise ValueError(f"amplitudes_V must be within +-{AO_RANGE_V:g} V (the DAQ's output range), got {bad[0]}")
-        if self.test == "harmonic" and self.fs_Hz < 2.5 * self.frequency_Hz:
+        if self.test == RecordKind.HARMONIC and self.fs_Hz < 2.5 * self.frequency_Hz:
             raise ValueError("fs_Hz must be at least 2.5 x frequency_Hz")
-        if self.test == "harmonic" and self.cycles / self.frequency_Hz > MAX_RECORD_S:
+        if self.test == RecordKind.HARMONIC and self.cycles / self.frequency_Hz > MAX_RECORD_S:
             raise ValueError(f"cycles / frequency_Hz is over {MAX_RECORD_S:g} s")
-        if self.test == "multisine" and self.fs_Hz < 2.5:  # its band is 0.1 Hz .. min(20 Hz, fs / 2.5)
+        if self.test == RecordKind.MULTISINE and self.fs_Hz < 2.5:  # its band is 0.1 Hz .. min(20 Hz, fs / 2.5)
             raise ValueError("fs_Hz must be at least 2.5 Hz for the multisine test")
         return self

@@ -10,6 +10,8 @@ from typing import Iterator
 
 from pydantic import Field
 
+from labrig.records import RecordKind
+
 from protocols.config import MAX_WAIT_S, AmplitudeSeriesSettings, ClampSettings, EisSettings, HarmonicSettings, SteppedSineSettings, StepSettings, Strict
 from protocols.single import amplitude_series_steps, eis_steps, harmonic_steps, stepped_sine_steps, step_steps
 from protocols.steps import Settle, Step, clamp_steps
@@ -42,4 +44,4 @@ def paper_sweep(cfg: PaperSweep, clamp_area_m2: float) -> Iterator[Step]:
         for name, steps in tests.items():
             yield from steps
             if cfg.rest_s > 0:  # names derive from the plan alone, so a resumed run re-plans identically
-                yield Step(f"{pre}rest_after_{name}", "settle", Settle(cfg.rest_s), dict(meta))
+                yield Step(f"{pre}rest_after_{name}", RecordKind.SETTLE, Settle(cfg.rest_s), dict(meta))

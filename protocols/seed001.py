@@ -19,6 +19,8 @@ from typing import Iterator
 
 from pydantic import Field, model_validator
 
+from labrig.records import RecordKind
+
 from protocols.config import ClampSettings, Strict
 from protocols.steps import Settle, Step, clamp_steps, multisine_record, sine_record, step_record
 
@@ -70,10 +72,10 @@ def seed001_plan(cfg: Seed001Protocol, clamp_area_m2: float) -> Iterator[Step]:
         nonlocal k
         k += 1
         if s.rest_s > 0:
-            yield Step(f"rest_{k}", "settle", Settle(s.rest_s), {"pressure_kPa": cfg.pressure_kPa})
+            yield Step(f"rest_{k}", RecordKind.SETTLE, Settle(s.rest_s), {"pressure_kPa": cfg.pressure_kPa})
 
     for a in s.sine_amplitudes_V:
-        yield sine_record("", "harmonic", a, s.sine_frequency_Hz, s.sine_cycles, s.fs_Hz, role=_role(s, a), **meta)
+        yield sine_record("", RecordKind.HARMONIC, a, s.sine_frequency_Hz, s.sine_cycles, s.fs_Hz, role=_role(s, a), **meta)
         yield from rest()
     for a in s.step_amplitudes_V:
         yield step_record("", a, s.step_on_s, s.step_off_s, s.fs_Hz, role=_role(s, a), **meta)

@@ -8,6 +8,8 @@ from typing import Iterator
 import numpy as np
 from pydantic import Field, model_validator
 
+from labrig.records import RecordKind
+
 from protocols.config import (
     AmplitudeSeriesSettings,
     ClampSettings,
@@ -25,7 +27,7 @@ from protocols.steps import Impedance, Settle, Step, clamp_steps, fs_for, log_fr
 def eis_steps(s: EisSettings, prefix: str = "", **meta) -> Iterator[Step]:
     freqs = log_freqs(s.f_start_Hz, s.f_stop_Hz, s.points)
     md = {"f_start_Hz": s.f_start_Hz, "f_stop_Hz": s.f_stop_Hz, "points": s.points, "ac_V": s.ac_V, "bias_V": s.bias_V, **meta}
-    yield Step(f"{prefix}eis", "eis", Impedance(freqs, s.ac_V, s.bias_V), md)
+    yield Step(f"{prefix}eis", RecordKind.EIS, Impedance(freqs, s.ac_V, s.bias_V), md)
 
 
 def step_steps(s: StepSettings, prefix: str = "", **meta) -> Iterator[Step]:
@@ -33,14 +35,14 @@ def step_steps(s: StepSettings, prefix: str = "", **meta) -> Iterator[Step]:
 
 
 def harmonic_steps(s: HarmonicSettings, prefix: str = "", **meta) -> Iterator[Step]:
-    yield sine_record(prefix, "harmonic", s.amplitude_V, s.frequency_Hz, s.cycles, s.fs_Hz, **meta)
+    yield sine_record(prefix, RecordKind.HARMONIC, s.amplitude_V, s.frequency_Hz, s.cycles, s.fs_Hz, **meta)
 
 
 def stepped_sine_steps(s: SteppedSineSettings, prefix: str = "", **meta) -> Iterator[Step]:
     for f in log_freqs(s.f_start_Hz, s.f_stop_Hz, s.points):
         cycles = max(s.measure_cycles, round(s.min_record_s * f))  # fast lines get more cycles, not fewer seconds
         settle = max(s.settle_cycles, float(np.ceil(s.settle_min_s * f)))
-        yield sine_record(prefix, "stepped_sine", s.amplitude_V, f, cycles, fs_for(f), settle_cycles=settle, **meta)
+        yield sine_record(prefix, RecordKind.STEPPED_SINE, s.amplitude_V, f, cycles, fs_for(f), settle_cycles=settle, **meta)
 
 
 def multisine_steps(s: MultisineSettings, prefix: str = "", **meta) -> Iterator[Step]:
@@ -51,14 +53,14 @@ def multisine_steps(s: MultisineSettings, prefix: str = "", **meta) -> Iterator[
 
 def amplitude_series_steps(s: AmplitudeSeriesSettings, prefix: str = "", **meta) -> Iterator[Step]:
     for k, a in enumerate(s.amplitudes_V):
-        if s.test == "harmonic":
-            yield sine_record(prefix, "harmonic", a, s.frequency_Hz, s.cycles, s.fs_Hz, series="amplitude", **meta)
-        elif s.test == "step":
+        if s.test == RecordKind.HARMONIC:
+            yield sine_record(prefix, RecordKind.HARMONIC, a, s.frequency_Hz, s.cycles, s.fs_Hz, series="amplitude", **meta)
+        elif s.test == RecordKind.STEP:
             yield step_record(prefix, a, 10.0, 10.0, s.fs_Hz, series="amplitude", **meta)
         else:
             yield multisine_record(prefix + f"a{a:g}V_", a / 2, 0.1, min(20.0, s.fs_Hz / 2.5), 20.0, 2, s.fs_Hz, 7, 0, series="amplitude", amplitude_V=a, **meta)
         if s.rest_s > 0:
-            yield Step(f"{prefix}rest_{k}", "settle", Settle(s.rest_s), dict(meta))
+            yield Step(f"{prefix}rest_{k}", RecordKind.SETTLE, Settle(s.rest_s), dict(meta))
 
 
 class _AtPressure(Strict):

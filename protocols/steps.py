@@ -15,6 +15,7 @@ import numpy as np
 
 from labrig import signals
 from labrig.events import daq_stream, eis_stream, force_stream
+from labrig.records import RecordKind
 from protocols import multisine
 
 
@@ -139,7 +140,7 @@ def step_record(prefix: str, amplitude_V: float, on_s: float, off_s: float, fs_H
     check_record(name, fs_Hz, pre_s + on_s + off_s)
     drive = signals.step(amplitude_V, pre_s + on_s + off_s, fs_Hz, t_on_s=pre_s, t_off_s=pre_s + on_s)
     md = {"amplitude_V": amplitude_V, "on_s": on_s, "off_s": off_s, "pre_s": pre_s, "fs_Hz": fs_Hz, **meta}
-    return Step(name, "step", Record(drive, fs_Hz), md)
+    return Step(name, RecordKind.STEP, Record(drive, fs_Hz), md)
 
 
 def sine_record(prefix: str, kind: str, amplitude_V: float, frequency_Hz: float, cycles: float, fs_Hz: float, settle_cycles: float = 0.0, **meta) -> Step:
@@ -165,7 +166,7 @@ def multisine_record(prefix: str, rms_V: float, f_min_Hz: float, f_max_Hz: float
         "detection_bins": ms.detection_bins.tolist(), "lead_in_s": lead_in_s, "transient_periods": 0 if lead_in_s > 0 else 1,
         "emphasis_Hz": emphasis_Hz or 0.0, **meta,
     }
-    return Step(f"{prefix}multisine_r{realisation}", "multisine", Record(multisine.drive(ms, periods, lead_in_s), fs_Hz), md)
+    return Step(f"{prefix}multisine_r{realisation}", RecordKind.MULTISINE, Record(multisine.drive(ms, periods, lead_in_s), fs_Hz), md)
 
 
 def log_freqs(f_start: float, f_stop: float, points: int) -> tuple[float, ...]:
@@ -175,6 +176,6 @@ def log_freqs(f_start: float, f_stop: float, points: int) -> tuple[float, ...]:
 def clamp_steps(prefix: str, pressure_kPa: float, clamp_area_m2: float, tol_N: float, hold_s: float, timeout_s: float, settle_s: float) -> Iterator[Step]:
     force = pressure_kPa * 1e3 * clamp_area_m2
     md = {"pressure_kPa": pressure_kPa, "force_N": force}
-    yield Step(f"{prefix}clamp", "clamp", SetClamp(force, tol_N, hold_s, timeout_s), md)
+    yield Step(f"{prefix}clamp", RecordKind.CLAMP, SetClamp(force, tol_N, hold_s, timeout_s), md)
     if settle_s > 0:
-        yield Step(f"{prefix}settle", "settle", Settle(settle_s), md)
+        yield Step(f"{prefix}settle", RecordKind.SETTLE, Settle(settle_s), md)

@@ -13,13 +13,13 @@ from labrig.cli import main
 from labrig.clock import ScaledClock
 from labrig.simulate import rig_file_data
 from mock_devices.simbench import SimulatedInstruments
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 
 @pytest.fixture
 def bench_rig(tmp_path):
     clock = ScaledClock(1000.0, time.time())
-    with SimulatedInstruments(Bench(clock, seed=3), seed=3) as sims:
+    with SimulatedInstruments(World(clock, seed=3), seed=3) as sims:
         path = tmp_path / "rig.toml"
         path.write_text(tomli_w.dumps(rig_file_data(sims, clock, "paper")))
         yield sims, path
@@ -41,7 +41,7 @@ def test_check_names_the_instrument_whose_server_is_stopped(bench_rig, capsys, s
     if stop == "impedance":
         sims.impedance.stop()
     else:
-        sims._servers[1].stop()  # keyence, loadcell, clamp: in that order
+        sims.served["loadcell"].stop()
     assert main(["check", "--rig", str(path)]) == 3
     out, err = capsys.readouterr()
     lines = {line.split()[1]: line for line in out.splitlines()}
@@ -53,7 +53,7 @@ def test_check_names_the_instrument_whose_server_is_stopped(bench_rig, capsys, s
 def test_e4990a_bench_checks_ok_and_refuses_a_paper_sweep_before_anything_moves(tmp_path, capsys):
     """What `labrig sim --impedance e4990a` serves (SimulatedInstruments(impedance_model="E4990A"))."""
     clock = ScaledClock(1000.0, time.time())
-    with SimulatedInstruments(Bench(clock, seed=4), seed=4, impedance_model="E4990A") as sims:
+    with SimulatedInstruments(World(clock, seed=4), seed=4, impedance_model="E4990A") as sims:
         rig = tmp_path / "rig.toml"
         rig.write_text(tomli_w.dumps(rig_file_data(sims, clock, "paper")))
         assert main(["check", "--rig", str(rig)]) == 0

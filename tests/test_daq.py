@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.signal import lfilter
 
-from drivers.daq import DaqRig
+from drivers.daq import Daq
 from drivers.errors import BufferOverflow, Disconnected, InstrumentErrorReply, InstrumentTimeout, ReplayMismatch
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
@@ -32,7 +32,7 @@ def sim(bench: StandInBench):
 
 @pytest.fixture
 def rig(sim: SimDaq):
-    r = DaqRig("SimDev1", grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V)
+    r = Daq("SimDev1", grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V)
     yield r
     r.safe()
 
@@ -41,7 +41,7 @@ def _sine(n: int, fs: float, f: float = 5.0, amp: float = 0.8) -> np.ndarray:
     return amp * np.sin(2 * np.pi * f * np.arange(n) / fs)
 
 
-def test_finite_record_matches_bench(rig: DaqRig, bench: StandInBench) -> None:
+def test_finite_record_matches_bench(rig: Daq, bench: StandInBench) -> None:
     fs, n = 1000.0, 3000
     drive = _sine(n, fs)
     out = rig.run_finite(drive, fs, timeout_s=5.0)
@@ -60,16 +60,16 @@ def test_finite_record_matches_bench(rig: DaqRig, bench: StandInBench) -> None:
 
 def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
     fs, drive = 1000.0, np.r_[_sine(500, 1000.0), np.zeros(500)]  # ends at rest: the bench lag decays
-    with DaqRig(grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V) as good:
+    with Daq(grpc_target=sim.address, current_gain_A_per_V=GAIN_A_PER_V, displacement_m_per_V=M_PER_V) as good:
         ref = good.run_finite(drive, fs)
     off_cal = {"current_gain_A_per_V": 2 * GAIN_A_PER_V, "displacement_m_per_V": 3 * M_PER_V}
-    with DaqRig(grpc_target=sim.address, **off_cal) as off:
+    with Daq(grpc_target=sim.address, **off_cal) as off:
         got = off.run_finite(drive, fs)
     np.testing.assert_allclose(got["i_A"], 2 * ref["i_A"], atol=5e-3 * GAIN_A_PER_V)
     np.testing.assert_allclose(got["disp_m"], 3 * ref["disp_m"], atol=5e-3 * M_PER_V)
 
 
-def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
+def test_continuous_blocks_are_contiguous(rig: Daq, sim: SimDaq) -> None:
     fs, period = 100.0, 50
     block = _sine(period, fs, f=fs / period)
     rig.start_continuous(fs, drive_block=block, buffer_s=BUFFER_S)
@@ -83,7 +83,7 @@ def test_continuous_blocks_are_contiguous(rig: DaqRig, sim: SimDaq) -> None:
     assert sim.ao_output_V() == 0.0
 
 
-def test_continuous_without_drive_reads_zero_volts(rig: DaqRig) -> None:
+def test_continuous_without_drive_reads_zero_volts(rig: Daq) -> None:
     rig.start_continuous(100.0, buffer_s=BUFFER_S)
     a, b = rig.read_block(100), rig.read_block(100)
     rig.stop()
@@ -92,7 +92,7 @@ def test_continuous_without_drive_reads_zero_volts(rig: DaqRig) -> None:
 
 
 def test_ao_returns_to_zero_after_close(sim: SimDaq) -> None:
-    rig = DaqRig(grpc_target=sim.address)
+    rig = Daq(grpc_target=sim.address)
     rig.run_finite(np.full(200, 1.5), 1000.0)
     assert sim.ao_output_V() == pytest.approx(1.5)  # the output holds the last drive sample, as hardware does
     rig.close()
@@ -105,7 +105,7 @@ def test_ao_returns_to_zero_after_close(sim: SimDaq) -> None:
     ("error", InstrumentErrorReply, "during"),  # a DAQmx error on the call after the read
 ])
 def test_ao_returns_to_zero_after_error_mid_record(sim: SimDaq, fault: str, exc: type, when: str) -> None:
-    rig = DaqRig(grpc_target=sim.address)
+    rig = Daq(grpc_target=sim.address)
     drive = np.full(20_000, 2.0)  # 200 s simulated = 0.2 s wall
     seen: list[float] = []
 
@@ -139,7 +139,7 @@ def test_ao_returns_to_zero_after_error_mid_record(sim: SimDaq, fault: str, exc:
     ("error", InstrumentErrorReply),
     ("disconnect", Disconnected),
 ])
-def test_each_fault_maps_to_its_exception(rig: DaqRig, sim: SimDaq, fault: str, exc: type) -> None:
+def test_each_fault_maps_to_its_exception(rig: Daq, sim: SimDaq, fault: str, exc: type) -> None:
     rig.start_continuous(100.0, buffer_s=BUFFER_S)
     rig.read_block(10)
     sim.inject(fault)
@@ -151,14 +151,14 @@ def test_each_fault_maps_to_its_exception(rig: DaqRig, sim: SimDaq, fault: str, 
     sim.clear_fault()
 
 
-def test_injected_error_code_is_reported(rig: DaqRig, sim: SimDaq) -> None:
+def test_injected_error_code_is_reported(rig: Daq, sim: SimDaq) -> None:
     sim.inject("error", code=-200077)
     with pytest.raises(InstrumentErrorReply) as info:
         rig.run_finite(np.zeros(10), 1000.0)
     assert info.value.code == -200077 and "-200077" in str(info.value)
 
 
-def test_real_overflow_when_the_reader_falls_behind(rig: DaqRig) -> None:
+def test_real_overflow_when_the_reader_falls_behind(rig: Daq) -> None:
     rig.start_continuous(1000.0, buffer_s=1.0)  # 1000-sample buffer = 1 ms of wall time at 1000x
     time.sleep(0.05)
     with pytest.raises(BufferOverflow):
@@ -166,20 +166,20 @@ def test_real_overflow_when_the_reader_falls_behind(rig: DaqRig) -> None:
 
 
 def test_disconnect_then_server_back(sim: SimDaq) -> None:
-    rig = DaqRig(grpc_target=sim.address)
+    rig = Daq(grpc_target=sim.address)
     sim.inject("disconnect")
     with pytest.raises(Disconnected):
         rig.run_finite(np.zeros(100), 1000.0)
     assert rig.safe() is False  # cannot confirm 0 V on a dead link, and says so
     sim.clear_fault()
-    with DaqRig(grpc_target=sim.address) as again:
+    with Daq(grpc_target=sim.address) as again:
         assert len(again.run_finite(np.zeros(100), 1000.0)["t_s"]) == 100
 
 
 def test_replay_answers_from_the_recording(sim: SimDaq) -> None:
     tr = Transcript()
     drive, fs = _sine(400, 1000.0), 1000.0
-    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+    with Daq(grpc_target=sim.address, transcript=tr) as rig:
         live = rig.run_finite(drive, fs)
     calls = [e.meta["method"] for e in tr.for_device("daq")]
     assert calls == ["run_finite", "zero_output"]
@@ -187,7 +187,7 @@ def test_replay_answers_from_the_recording(sim: SimDaq) -> None:
     assert len(payload) == 4 * 400 * 8  # four float64 arrays
 
     saved = Transcript.loads(tr.dumps())
-    with DaqRig.from_replay(saved, "daq") as replay:
+    with Daq.from_replay(saved, "daq") as replay:
         again = replay.run_finite(drive, fs)
     for k in live:
         np.testing.assert_array_equal(again[k], live[k])
@@ -196,23 +196,23 @@ def test_replay_answers_from_the_recording(sim: SimDaq) -> None:
 def test_replay_mismatch_names_the_call(sim: SimDaq) -> None:
     tr = Transcript()
     drive = _sine(300, 1000.0)
-    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+    with Daq(grpc_target=sim.address, transcript=tr) as rig:
         rig.run_finite(drive, 1000.0)
     with pytest.raises(ReplayMismatch, match="run_finite"):
-        DaqRig.from_replay(tr, "daq").run_finite(drive * 1.01, 1000.0)
+        Daq.from_replay(tr, "daq").run_finite(drive * 1.01, 1000.0)
     with pytest.raises(ReplayMismatch, match="run_finite"):
-        DaqRig.from_replay(tr, "daq").run_finite(drive, 2000.0)
+        Daq.from_replay(tr, "daq").run_finite(drive, 2000.0)
     with pytest.raises(ReplayMismatch, match="current_gain_A_per_V"):
-        DaqRig.from_replay(tr, "daq", current_gain_A_per_V=5e-3).run_finite(drive, 1000.0)
+        Daq.from_replay(tr, "daq", current_gain_A_per_V=5e-3).run_finite(drive, 1000.0)
 
 
 def test_replay_of_a_continuous_run(sim: SimDaq) -> None:
     tr = Transcript()
-    with DaqRig(grpc_target=sim.address, transcript=tr) as rig:
+    with Daq(grpc_target=sim.address, transcript=tr) as rig:
         rig.start_continuous(100.0, buffer_s=BUFFER_S)
         live = [rig.read_block(50), rig.read_block(50)]
         rig.stop()
-    with DaqRig.from_replay(tr, "daq") as rig:
+    with Daq.from_replay(tr, "daq") as rig:
         rig.start_continuous(100.0, buffer_s=BUFFER_S)
         again = [rig.read_block(50), rig.read_block(50)]
         with pytest.raises(ReplayMismatch, match="read_block"):
@@ -223,7 +223,7 @@ def test_replay_of_a_continuous_run(sim: SimDaq) -> None:
 
 
 def test_local_path_without_ni_daqmx_is_a_clear_error() -> None:
-    rig = DaqRig("Dev1")  # plain nidaqmx.Task(): needs the NI-DAQmx driver on this machine
+    rig = Daq("Dev1")  # plain nidaqmx.Task(): needs the NI-DAQmx driver on this machine
     with pytest.raises((Disconnected, InstrumentErrorReply)):
         rig.run_finite(np.zeros(10), 1000.0)
     assert rig.safe() is False
@@ -258,10 +258,10 @@ def test_start_trigger_order_matters_as_on_hardware(sim: SimDaq) -> None:
 
 def test_with_the_simulated_world() -> None:
     """The real world bench behind the DAQ: a finite record and a few continuous blocks."""
-    from mock_devices.world import Bench
+    from mock_devices.world import World
 
-    world = Bench(ScaledClock(1000.0))
-    with SimDaq(world) as sim, DaqRig(grpc_target=sim.address) as rig:
+    world = World(ScaledClock(1000.0))
+    with SimDaq(world) as sim, Daq(grpc_target=sim.address) as rig:
         fs = 1000.0
         drive = 0.5 * np.sin(2 * np.pi * np.arange(5000) / fs)
         out = rig.run_finite(drive, fs)

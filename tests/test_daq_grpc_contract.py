@@ -22,7 +22,7 @@ import nidaqmx
 import numpy as np
 from nidaqmx._stubs.nidaqmx_pb2_grpc import NiDAQmxServicer
 
-from drivers.daq import DaqRig
+from drivers.daq import Daq
 from labrig.clock import ScaledClock
 from mock_devices.daq_grpc import DaqServicer, SimDaq, StandInBench
 
@@ -55,16 +55,16 @@ def record_calls() -> dict[str, list[str]]:
     log = MethodLog()
     out: dict[str, list[str]] = {}
     with SimDaq(StandInBench(ScaledClock(1000.0)), interceptors=[log]) as sim:
-        with DaqRig(grpc_target=sim.address) as rig:
+        with Daq(grpc_target=sim.address) as rig:
             rig.run_finite(np.sin(np.linspace(0, 6.28, 500)), 1000.0)
         out["finite"] = log.take()
-        with DaqRig(grpc_target=sim.address) as rig:
+        with Daq(grpc_target=sim.address) as rig:
             rig.start_continuous(100.0, drive_block=np.sin(np.linspace(0, 6.28, 50)), buffer_s=100.0)
             rig.read_block(100)
             rig.read_block(100)
             rig.stop()
         out["continuous"] = log.take()
-        with DaqRig(grpc_target=sim.address, watchdog_s=1e6) as rig:
+        with Daq(grpc_target=sim.address, watchdog_s=1e6) as rig:
             rig.watchdog.pet()
             rig.drive_readback_V()
         out["watchdog"] = log.take()

@@ -1,6 +1,6 @@
 """The DAQ driver's watchdog: a dead host or a lost link leaves the drive at 0 V within the watchdog time.
 
-The host is real (a separate Python process running ``DaqRig`` over gRPC), the kill is SIGKILL, and the
+The host is real (a separate Python process running ``Daq`` over gRPC), the kill is SIGKILL, and the
 expiry is measured on the simulated bench's clock, as the server-side timer counts it.
 """
 
@@ -17,21 +17,21 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from drivers.daq import DaqRig
+from drivers.daq import Daq
 from drivers.daq_watchdog import WALL_FLOOR_S
 from drivers.errors import Disconnected
 from labrig.clock import ScaledClock
 from mock_devices.daq_grpc import SimDaq, StandInBench
 
 SCALE = 100.0  # rig seconds per wall second in these tests
-TIMEOUT_RIG_S = max(5.0, WALL_FLOOR_S * SCALE)  # what DaqRig(watchdog_s=5) arms at this scale
+TIMEOUT_RIG_S = max(5.0, WALL_FLOOR_S * SCALE)  # what Daq(watchdog_s=5) arms at this scale
 ROOT = Path(__file__).resolve().parents[1]
 
 HOST = textwrap.dedent("""
     import sys, time
     import numpy as np
-    from drivers.daq import DaqRig
-    rig = DaqRig(grpc_target=sys.argv[1], watchdog_s=5.0, time_scale=float(sys.argv[2]))
+    from drivers.daq import Daq
+    rig = Daq(grpc_target=sys.argv[1], watchdog_s=5.0, time_scale=float(sys.argv[2]))
     rig.run_finite(np.full(200, 1.0), 1000.0)  # the output then holds 1 V, as hardware does
     print("armed", flush=True)
     time.sleep(120)
@@ -48,7 +48,7 @@ def wait_for_zero(sim: SimDaq, limit_wall_s: float) -> float | None:
     return None
 
 
-def readback_when_back(rig: DaqRig, limit_wall_s: float = 10.0) -> float:
+def readback_when_back(rig: Daq, limit_wall_s: float = 10.0) -> float:
     """The drive read back once the gRPC channel has reconnected (it backs off ~1 s after a lost link)."""
     end = time.monotonic() + limit_wall_s
     while True:
@@ -89,7 +89,7 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
             print(f"\nwatchdog: host killed -> drive 0 V after {t_zero - t_kill:.1f} rig s "
                   f"({w_zero - w_kill:.3f} wall s) at {SCALE:g}x; timeout {TIMEOUT_RIG_S:g} rig s")
         # a new host takes over the dead one's watchdog and can drive again
-        with DaqRig(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE) as rig:
+        with Daq(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE) as rig:
             out = rig.run_finite(np.full(100, 0.5), 1000.0)
             assert np.allclose(out["v_V"], 0.5, atol=1e-3)
         assert sim.ao_output_V() == 0.0
@@ -99,7 +99,7 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
 def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
     clock = ScaledClock(SCALE)
     with SimDaq(StandInBench(clock)) as sim:
-        rig = DaqRig(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE)
+        rig = Daq(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE)
         rig.run_finite(np.full(200, 1.0), 1000.0)
         assert rig.drive_readback_V() == pytest.approx(1.0, abs=1e-3)
         t_lost = clock.now()
@@ -116,7 +116,7 @@ def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
 
 def test_a_host_that_keeps_resetting_is_never_cut_off() -> None:
     clock = ScaledClock(SCALE)
-    with SimDaq(StandInBench(clock)) as sim, DaqRig(grpc_target=sim.address, watchdog_s=5.0,
+    with SimDaq(StandInBench(clock)) as sim, Daq(grpc_target=sim.address, watchdog_s=5.0,
                                                     time_scale=SCALE) as rig:
         rig.start_continuous(1000.0, drive_block=np.full(1000, 0.8), buffer_s=1000.0)
         n_blocks = int(np.ceil(1.5 * TIMEOUT_RIG_S / 10.0))  # 10 rig s blocks over 1.5 timeouts, read as they come

@@ -13,7 +13,7 @@ from labrig import signals
 from labrig.physics import transfer
 from mock_devices import effects as fx
 from mock_devices import scenarios
-from mock_devices.world import Bench, Noise
+from mock_devices.world import World, Noise
 
 CATALOGUE = (
     "back_relaxation", "faradaic_current", "hysteresis", "time_delay", "sensor_offset",
@@ -36,9 +36,9 @@ class FakeClock:
         self.t += max(seconds, 0.0)
 
 
-def bench(scenario: str = "none", seed: int = 0, noise: Noise | None = None, **kw) -> Bench:
+def bench(scenario: str = "none", seed: int = 0, noise: Noise | None = None, **kw) -> World:
     """A fresh bench with default (realistic) noise; the noise seed is fixed so on/off differ only by the effect."""
-    return Bench(FakeClock(), seed=7, effects=scenarios.effects_for(scenario, seed), noise=noise, **kw)
+    return World(FakeClock(), seed=7, effects=scenarios.effects_for(scenario, seed), noise=noise, **kw)
 
 
 def harmonics(x: np.ndarray, fs: float, f: float, n: int = 5) -> np.ndarray:
@@ -69,7 +69,7 @@ def harmonic_ratio(x: np.ndarray, fs: float, f: float, k: int) -> float:
     return abs(h[k - 1]) / abs(h[0])
 
 
-def step_run(scenario: str, seed: int = 0, amp: float = 1.0, fs: float = 50.0, t0: float = 0.0, b: Bench | None = None):
+def step_run(scenario: str, seed: int = 0, amp: float = 1.0, fs: float = 50.0, t0: float = 0.0, b: World | None = None):
     drive = signals.step(amp, 61.0, fs, t_on_s=1.0, t_off_s=31.0)
     return (b or bench(scenario, seed)).run_record(t0, fs, drive)
 

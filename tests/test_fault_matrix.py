@@ -23,7 +23,7 @@ from labrig.clock import ScaledClock
 from labrig.simulate import rig_file_data
 from labrig.store import SessionReader
 from mock_devices.simbench import SimulatedInstruments
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -77,7 +77,7 @@ def test_kill_9_of_labrig_run_leaves_the_drive_at_zero_within_the_watchdog_time(
     the killed client's AI task still holds the card), SIGKILLed mid-hold."""
     scale = 100.0
     clock = ScaledClock(scale, time.time())
-    sims = SimulatedInstruments(Bench(clock, preset="paper", seed=0)).start()
+    sims = SimulatedInstruments(World(clock, preset="paper", seed=0)).start()
     try:
         rig_path = tmp_path / "rig.toml"
         rig_path.write_text(tomli_w.dumps(rig_file_data(sims, clock, "paper")))

@@ -28,7 +28,7 @@ from labrig.physics import transfer
 from labrig.physics.params import TABLE1, TABLE2_KT_BAR, Specimen
 from labrig.session_run import RunRequest, execute
 from mock_devices.impedance_sim import VirtualClock
-from mock_devices.world import Bench
+from mock_devices.world import World
 
 # The clean paper sweeps of seeds 1-4, shared with the diagnosis coverage (conftest's bench_sessions: run once,
 # fitted by `labrig fit`'s code). Seed 1 is the Tables test's sweep. A cheaper protocol is not the same test: with
@@ -40,9 +40,9 @@ LINE_FITTED = ("R", "R_p", "Q0", "n")
 
 
 def bench_truth(pressure_kPa: float) -> Specimen:
-    """The strip the simulated bench used at a nominal pressure: built by mock_devices.world.Bench."""
+    """The strip the simulated bench used at a nominal pressure: built by mock_devices.world.World."""
     clock = VirtualClock()  # simulated time that moves only when slept
-    bench = Bench(clock, preset="paper")
+    bench = World(clock, preset="paper")
     force = pressure_kPa * 1e3 * bench.preset.base.geometry.clamp_area
     bench.set_clamp_force(float(f"{force:.2f}"))  # what drivers.clamp.MotorClamp sends
     clock.sleep(600.0)

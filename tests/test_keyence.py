@@ -26,7 +26,7 @@ TRANSCRIPT = Path(__file__).parent / "data" / "transcripts" / "keyence_basic.jso
 RES_M = 0.1e-6  # controller resolution
 
 
-class Bench:
+class World:
     """Stand-in bench: the strip sits where ``displacement_m`` says."""
 
     def __init__(self, displacement_m: float = 0.0):
@@ -39,7 +39,7 @@ class Bench:
 
 @pytest.fixture(params=["pty", "tcp"])
 def rig(request):
-    bench = Bench()
+    bench = World()
     sim = KeyenceSim(bench)
     with serve(sim, request.param) as server, Keyence(server.address, timeout_s=0.5) as k:
         yield bench, sim, k, server
@@ -255,7 +255,7 @@ def test_stored_recording_is_what_labrig_produces_today(tmp_path):
 def test_epics_lkg_client_sequence_over_a_pty():
     from _exchanges import Exchanges, serial_asker
 
-    bench = Bench(1.2345e-3)
+    bench = World(1.2345e-3)
     sim = KeyenceSim(bench)
     with serve(sim, "pty") as server:
         ask, port = serial_asker(server.address)
@@ -304,7 +304,7 @@ def test_manual_commands_through_the_driver(rig):
     (b"M3", b"ER,M3,22\r"),
 ])
 def test_error_reply_has_three_fields_and_the_manuals_code(request_, reply):
-    sim = KeyenceSim(Bench())
+    sim = KeyenceSim(World())
     assert sim.respond(request_) == reply
     assert sim.respond(b"Q0") == b"Q0\r"
     assert sim.respond(b"SW,OF,1,+9999999") == b"ER,SW,22\r"

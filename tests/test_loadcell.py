@@ -20,7 +20,7 @@ G_N = 9.80665  # standard gravity, N per kgf (independent of the driver's consta
 HALF_COUNT_N = 0.005 * G_N + 1e-9  # frames carry 0.01 kgf
 
 
-class Bench:
+class World:
     """Stand-in bench: clamp force ``force(t)`` of simulated time t on a 1000x clock."""
 
     def __init__(self, force_N: float = 0.0):
@@ -48,7 +48,7 @@ def _fresh(lc: LoadCell, expect_N: float | None = None, wall_s: float = 1.0):
 
 @pytest.fixture(params=["pty", "tcp"])
 def rig(request):
-    bench = Bench(4.9)
+    bench = World(4.9)
     sim = LoadCellSim(bench)
     with serve(sim, request.param) as server, LoadCell(server.address, stale_s=0.15) as lc:
         yield bench, sim, lc, server
@@ -64,7 +64,7 @@ def test_force_matches_bench_within_resolution(rig, f_N):
 
 
 def test_newton_frames():
-    bench = Bench(12.3456)
+    bench = World(12.3456)
     with serve(LoadCellSim(bench, unit="N"), "tcp") as server, LoadCell(server.address, stale_s=0.15) as lc:
         assert lc.latest().raw == b"ST,GS,+0012.35N\r\n" or lc.latest().raw.endswith(b"N\r\n")
         assert _fresh(lc, 12.3456).force_N == pytest.approx(12.3456, abs=0.005 + 1e-9)
@@ -159,7 +159,7 @@ def test_noise_between_frames_is_skipped(rig):
 
 @pytest.mark.parametrize("fault,exc", [("garbage", errors.MalformedReply), ("timeout", errors.StaleStream)])
 def test_dead_from_the_start(fault, exc):
-    sim = LoadCellSim(Bench(1.0))
+    sim = LoadCellSim(World(1.0))
     sim.inject(fault)
     with serve(sim, "pty") as server, LoadCell(server.address, stale_s=0.1) as lc:
         t0 = time.monotonic()
@@ -319,7 +319,7 @@ def test_project_sperm_scales_client_reads_the_simulator(transport):
     18-byte A&D frame ("18 bytes for AND" in the CAS manuals) is what it slices."""
     import serial
 
-    bench = Bench(1.2345 * G_N)
+    bench = World(1.2345 * G_N)
     with serve(LoadCellSim(bench), transport) as server:
         port = serial.serial_for_url(server.address, timeout=1.0)
         try:

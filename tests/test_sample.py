@@ -13,7 +13,7 @@ STRIP = {"name": "strip-C2", "length_m": 0.04, "width_m": 0.01, "thickness_m": 0
 
 def rig(sample):
     cfg = parse_rig({"instruments": INSTRUMENTS, **({"sample": sample} if sample is not None else {})}, "rig.toml")
-    return Rig(cfg, None, None, None, None, None, None)  # sample_info needs no instrument
+    return Rig(cfg, None)  # sample_info needs no instrument
 
 
 def test_the_preset_stays_the_default():

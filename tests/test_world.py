@@ -7,13 +7,13 @@ from labrig import signals
 from labrig.clock import ScaledClock
 from labrig.physics import impedance as imp
 from labrig.physics import presets, timeresp, transfer
-from mock_devices.world import Bench, Effect, Noise
+from mock_devices.world import World, Effect, Noise
 
 QUIET = Noise(0, 0, 0, 0, 0)
 
 
 def test_records_carry_the_strips_memory():
-    b = Bench(ScaledClock(1000.0), noise=QUIET)
+    b = World(ScaledClock(1000.0), noise=QUIET)
     fs = 500.0
     on, off = signals.step(1.0, 10, fs), np.zeros(int(10 * fs))
     r1, r2 = b.run_record(0.0, fs, on), b.run_record(10.0, fs, off)
@@ -26,7 +26,7 @@ def test_records_carry_the_strips_memory():
 
 
 def test_current_and_voltage_follow_the_impedance():
-    b = Bench(ScaledClock(1000.0), noise=QUIET, pressure_kPa=612)
+    b = World(ScaledClock(1000.0), noise=QUIET, pressure_kPa=612)
     fs, f0 = 200.0, 1.0
     v = signals.sine(0.5, f0, 30.0, fs)
     r = b.run_record(0.0, fs, v)
@@ -40,7 +40,7 @@ def test_current_and_voltage_follow_the_impedance():
 
 def test_clamp_moves_towards_its_target_and_changes_the_strip():
     clock = ScaledClock(1000.0)
-    b = Bench(clock, noise=QUIET, pressure_kPa=3062)
+    b = World(clock, noise=QUIET, pressure_kPa=3062)
     f_high = b.clamp_force_now()
     assert f_high == pytest.approx(3062e3 * 16e-6, rel=1e-6)
     b.set_clamp_force(9.8)
@@ -56,13 +56,13 @@ def test_effects_hook_in_without_touching_the_physics():
         def outputs(self, out, t, v, bench):
             return {**out, "disp_m": out["disp_m"] + 1e-3}
 
-    b = Bench(ScaledClock(1000.0), noise=QUIET, effects=[Offset()])
+    b = World(ScaledClock(1000.0), noise=QUIET, effects=[Offset()])
     r = b.run_record(0.0, 100.0, np.zeros(100))
     assert np.allclose(r["disp_m"], 1e-3)
 
 
 def test_impedance_noise_is_small_and_seeded():
-    a = Bench(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
-    b = Bench(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
+    a = World(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
+    b = World(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
     exact = imp.impedance(2j * np.pi * np.array([1.0, 10.0]), presets.get("paper").specimen())
     assert np.array_equal(a, b) and np.allclose(a, exact, rtol=0.01)

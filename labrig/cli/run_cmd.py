@@ -171,11 +171,11 @@ def sim_cmd(rig_out, preset, scenario, seed, time_scale, transport, impedance_mo
     from labrig.clock import ScaledClock
     from labrig.simulate import rig_file_data
     from mock_devices.simbench import SimulatedInstruments
-    from mock_devices.world import Bench
+    from mock_devices.world import World
 
     effects = _effects(scenario, seed)
     clock = ScaledClock(time_scale, time.time())
-    bench = Bench(clock, preset=preset, seed=seed, effects=effects)
+    bench = World(clock, preset=preset, seed=seed, effects=effects)
     stop = threading.Event()
     handler = lambda signum, frame: stop.set()  # noqa: E731
     signal.signal(signal.SIGINT, handler)

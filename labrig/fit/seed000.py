@@ -30,6 +30,7 @@ from labrig.fit.session_data import PressureData, SessionData, step_offset, step
 from labrig.physics import presets, transfer
 from labrig.physics.clamp import ClampLaw
 from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen
+from labrig.records import RecordKind
 
 REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
 MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
@@ -227,13 +228,13 @@ def clamp_estimates(params: lmfit.Parameters, p: float, prior: Specimen) -> dict
 def _measured_actuation(d: PressureData) -> tuple[float | None, float | None]:
     """(peak |displacement| of the step response, harmonic amplitude) at this pressure."""
     peak = None
-    steps = d.of_kind("step")
+    steps = d.of_kind(RecordKind.STEP)
     if steps:
         r = steps[0]
         m = step_metrics(r.t, r.v, r.d, step_onset(r), step_offset(r))
         peak = m.peak_m / max(abs(float(r.meta.get("amplitude_V", 1.0))), 1e-12)
     harm = None
-    hs = d.of_kind("harmonic")
+    hs = d.of_kind(RecordKind.HARMONIC)
     if hs:
         from labrig.estimate import harmonic_metrics
 

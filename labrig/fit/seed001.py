@@ -22,8 +22,9 @@ from labrig.fit.hammerstein import HammersteinFit, Record, decimate_record, eval
 from labrig.fit.session_data import SessionData, TimeRecord
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
+from labrig.records import RecordKind
 
-KINDS = ("harmonic", "multisine", "step")
+KINDS = (RecordKind.HARMONIC, RecordKind.MULTISINE, RecordKind.STEP)
 ZERO_S = 0.02  # s at the start of a record that set the displacement's zero (the drive starts at 0 V)
 MAX_RATE_HZ, MAX_S = 250.0, 8.0
 
@@ -32,7 +33,7 @@ def usable(sd: SessionData, force: bool = False) -> list[TimeRecord]:
     recs = [r for r in sd.all_records() if r.kind in KINDS]
     if force:
         return recs
-    return [r for r in recs if r.meta.get("series") in ("amplitude", "broadband") or r.kind == "multisine"]
+    return [r for r in recs if r.meta.get("series") in ("amplitude", "broadband") or r.kind == RecordKind.MULTISINE]
 
 
 def split(recs: list[TimeRecord]) -> tuple[list[TimeRecord], list[TimeRecord]]:

@@ -20,6 +20,7 @@ from labrig.fit.session_data import SessionData
 from labrig.fit.seed001 import MAX_RATE_HZ, MAX_S, Seed001Data, clean, prepare, summarise
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
+from labrig.records import RecordKind
 
 CONVERGED = 0.5  # a run converged when its summed error is within 50 % of the best run's
 
@@ -97,7 +98,7 @@ def static_trend(data: Seed001Data) -> dict[str, Any]:
     drive there; what the electric stage's static law (hm.static_current) must follow."""
     V, I, names = [], [], []
     for r in data.raw:
-        if r.kind != "step" or not r.meta.get("on_s"):
+        if r.kind != RecordKind.STEP or not r.meta.get("on_s"):
             continue
         pre, on = float(r.meta.get("pre_s", 0.0)), float(r.meta["on_s"])
         sel = (r.t - r.t[0] >= pre + 0.8 * on) & (r.t - r.t[0] < pre + on)
@@ -113,7 +114,7 @@ def noise_level(data: Seed001Data) -> dict[str, float | None]:
     over the rms of the record (median over steps). What an error at the noise floor would be."""
     out: dict[str, list] = {"current": [], "displacement": []}
     for r in data.raw:
-        pre = float(r.meta.get("pre_s", 0.0)) if r.kind == "step" else 0.0
+        pre = float(r.meta.get("pre_s", 0.0)) if r.kind == RecordKind.STEP else 0.0
         sel = (r.t - r.t[0]) < 0.9 * pre
         if sel.sum() > 10:
             for key, x in (("current", r.i), ("displacement", r.d)):

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from labrig.errors import BadInput
+from labrig.records import HOLD_KINDS, SINE_KINDS, RecordKind
 from labrig.estimate import (
     BlaEstimate,
     DriftEstimate,
@@ -39,7 +40,7 @@ from labrig.estimate import (
 @dataclass
 class TimeRecord:
     name: str
-    kind: str  # step | harmonic | stepped_sine | multisine | free
+    kind: str  # a labrig.records.RecordKind of TIME_KINDS
     meta: dict[str, Any]
     t: np.ndarray
     v: np.ndarray
@@ -179,7 +180,7 @@ def sine_cycles(r: TimeRecord) -> tuple[float, float | None]:
     cycles = float(m["cycles"]) if m.get("cycles") else None
     if m.get("settle_cycles") is not None:
         return float(m["settle_cycles"]), cycles
-    if r.kind == "stepped_sine" and m.get("frequency_Hz"):
+    if r.kind == RecordKind.STEPPED_SINE and m.get("frequency_Hz"):
         # + 0.01: a record of n cycles may end a rounding error short of n
         whole = math.floor((r.t[-1] - r.t[0]) * float(m["frequency_Hz"]) + 0.01)
         return float(round(whole / 3)), cycles
@@ -202,8 +203,8 @@ def load_session(path: str | Path) -> SessionData:
     with SessionReader(p) as r:
         sample = dict(r.sample)
         for st in r.steps():
-            if st.status not in ("done",) or st.kind in ("clamp", "settle"):
-                if st.status not in ("done", "skipped") and st.kind not in ("clamp", "settle"):
+            if st.status not in ("done",) or st.kind in HOLD_KINDS:
+                if st.status not in ("done", "skipped") and st.kind not in HOLD_KINDS:
                     notes.append(f"step {st.name}: {st.status}, not used")
                 continue
             pk = st.metadata.get("pressure_kPa")
@@ -211,7 +212,7 @@ def load_session(path: str | Path) -> SessionData:
             if pk is not None:
                 bucket = by_p.setdefault(float(pk), PressureData(float(pk)))
             streams = r.streams(st)
-            if st.kind == "eis" and "eis" in streams:
+            if st.kind == RecordKind.EIS and "eis" in streams:
                 s = r.stream(st, "eis")
                 f, z = s["f_Hz"], s["z_re_ohm"] + 1j * s["z_im_ohm"]
                 if not _finite(f, z.real, z.imag) or f.size < 3:
@@ -231,7 +232,7 @@ def load_session(path: str | Path) -> SessionData:
                 loose.append(rec)
                 continue
             bucket.records.append(rec)
-            if st.kind == "stepped_sine":
+            if st.kind == RecordKind.STEPPED_SINE:
                 bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(st.metadata["frequency_Hz"]), *sine_cycles(rec)))
     for b in by_p.values():
         b.sines.sort(key=lambda s: s.frequency_Hz)
@@ -301,7 +302,7 @@ def _periodic_start(r: TimeRecord, n: int, periods: int) -> int:
 
 def _add_multisine(b: PressureData, notes: list[str]) -> None:
     groups: dict[tuple, list[TimeRecord]] = {}
-    for r in b.of_kind("multisine"):
+    for r in b.of_kind(RecordKind.MULTISINE):
         groups.setdefault(_design_key(r), []).append(r)
     for recs in groups.values():
         try:
@@ -330,12 +331,12 @@ def _stack(columns: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np
 def _sine_skip(r: TimeRecord) -> float:
     """Cycles to skip for a rate of change: the settling cycles, at least one cycle of a harmonic record (its
     start transient would read as drift)."""
-    return sine_cycles(r)[0] or (1.0 if r.kind == "harmonic" else 0.0)
+    return sine_cycles(r)[0] or (1.0 if r.kind == RecordKind.HARMONIC else 0.0)
 
 
 def _add_drift(b: PressureData) -> None:
     """Drift of the gains at this pressure, from every source the records allow (see PressureData.drift)."""
-    est = {**_multisine_drift(b.bla), **_sine_drift(b.records), **_step_drift(b.of_kind("step"))}
+    est = {**_multisine_drift(b.bla), **_sine_drift(b.records), **_step_drift(b.of_kind(RecordKind.STEP))}
     b.drift = {k: v for k, v in est.items() if v is not None}
 
 
@@ -358,7 +359,7 @@ def _sine_drift(records: list[TimeRecord]) -> dict[str, DriftEstimate | None]:
     records (kind, f, amplitude) repeated."""
     within, groups = [], {}
     for r in records:
-        if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta:
+        if r.kind in SINE_KINDS and "frequency_Hz" in r.meta:
             f = float(r.meta["frequency_Hz"])
             within.append(sine_gain_rate(r.t, r.v, r.d, f, _sine_skip(r)))
             groups.setdefault((r.kind, f, r.meta.get("amplitude_V")), []).append(r)

@@ -18,9 +18,10 @@ from typing import Any
 import numpy as np
 
 from labrig.events import Block, Event, RunStart, RunStop, StepEnd, StepStart, planned_seconds
+from labrig.records import SINE_KINDS
 
 TRACE_COLUMNS = ("v_V", "i_A", "disp_m")  # daq ring columns after the time column
-FRF_KINDS = ("stepped_sine", "harmonic")  # records demodulated at their frequency_Hz when they finish
+FRF_KINDS = SINE_KINDS  # records demodulated at their frequency_Hz when they finish
 
 
 class Ring:

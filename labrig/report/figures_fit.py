@@ -15,6 +15,7 @@ from matplotlib.lines import Line2D
 
 from labrig.physics import impedance as imp
 from labrig.physics import timeresp, transfer
+from labrig.records import RecordKind
 
 MEASURED = dict(marker="o", linestyle="none", markersize=5, markerfacecolor="none")
 MODEL = dict(linestyle="-", linewidth=1.6)
@@ -175,7 +176,7 @@ def step_figure(feats: Any, specimens: dict, pressures: list[float]) -> Figure |
 
 def harmonic_figure(sd: Any, specimens: dict) -> Figure | None:
     """The harmonic record of each pressure against the model driven by the recorded voltage (from rest)."""
-    recs = [(d.pressure_kPa, d.of_kind("harmonic")[0]) for d in sd.pressures if d.of_kind("harmonic")]
+    recs = [(d.pressure_kPa, d.of_kind(RecordKind.HARMONIC)[0]) for d in sd.pressures if d.of_kind(RecordKind.HARMONIC)]
     if not recs:
         return None
     ps = [d.pressure_kPa for d in sd.pressures]
@@ -199,7 +200,7 @@ def _actuation(fit_json: dict, sd: Any, specimens: dict, feats: Any) -> dict[str
         out[name][0].append(p)
         out[name][1].append(v * 1e3)
 
-    harm_amp = {d.pressure_kPa: abs(float(d.of_kind("harmonic")[0].meta.get("amplitude_V", 1.0))) for d in sd.pressures if d.of_kind("harmonic")}
+    harm_amp = {d.pressure_kPa: abs(float(d.of_kind(RecordKind.HARMONIC)[0].meta.get("amplitude_V", 1.0))) for d in sd.pressures if d.of_kind(RecordKind.HARMONIC)}
     for r in fit_json["per_pressure"]:
         p = r["pressure_kPa"]
         if r.get("peak_disp_m") is not None:

@@ -11,6 +11,7 @@ from typing import Any
 from labrig.report import figures_fit as ff
 from labrig.report import html as h
 from labrig.report.data import ReportData
+from labrig.records import HOLD_KINDS
 
 PER_PRESSURE = (  # (JSON key, header, scale to the shown unit)
     ("R_cont_ohm", "R_cont (ohm)", 1.0),
@@ -37,7 +38,7 @@ SCALARS = (
 
 
 def _protocols(s: dict[str, Any]) -> str:
-    kinds = list(dict.fromkeys(st["kind"] for st in s["steps"] if st["kind"] not in ("clamp", "settle")))
+    kinds = list(dict.fromkeys(st["kind"] for st in s["steps"] if st["kind"] not in HOLD_KINDS))
     return f"{s['protocol']} ({', '.join(kinds) or 'no measuring steps'})"
 
 

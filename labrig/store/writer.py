@@ -496,7 +496,7 @@ def _create_layout(f: h5py.File, ev: RunStart) -> None:
 
 def _create_step(parent: h5py.Group, plan: StepPlan) -> None:
     g = parent.create_group(st.step_group_name(plan.index, plan.name))
-    g.attrs.update({"NX_class": "NXcollection", "index": plan.index, "name": plan.name, "kind": plan.kind,
+    g.attrs.update({"NX_class": "NXcollection", "index": plan.index, "name": plan.name, "kind": str(plan.kind),
                     "metadata_json": st.to_json(plan.metadata)})
     st.set_attrs(g, {k: v for k, v in plan.metadata.items() if k not in ("index", "name", "kind")})
     st.new_status(g, "status", "planned")

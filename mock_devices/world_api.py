@@ -1,7 +1,7 @@
 """What a simulated instrument may ask of the simulated bench (the "world").
 
 Every simulated instrument is a thin protocol layer over one bench object, so the laser, the DAQ, the
-load cell and the impedance analyser agree with each other. ``mock_devices.world.Bench`` implements
+load cell and the impedance analyser agree with each other. ``mock_devices.world.World`` implements
 this; tests of a single instrument may use any object with these members.
 
 Time is simulated seconds on ``bench.clock`` (``now()``, ``sleep(s)``, ``time_scale``).
@@ -22,7 +22,7 @@ class SimClock(Protocol):
     def sleep(self, seconds: float) -> None: ...
 
 
-class BenchView(Protocol):
+class WorldView(Protocol):
     clock: SimClock
 
     def displacement_now(self) -> float:
