@@ -70,10 +70,10 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
             assert host.stdout is not None and host.stdout.readline().strip() == "armed"
             time.sleep(1.5 * TIMEOUT_RIG_S / SCALE)  # longer than a timeout: the host's resets keep the drive live
             assert sim.ao_output_V() == 1.0
-            t_kill = clock.now()
+            t_sent = clock.now()  # a loaded machine may let the host reset once more before the signal lands ...
             host.send_signal(signal.SIGKILL)
             host.wait(5.0)
-            w_kill = time.monotonic()
+            t_kill, w_kill = clock.now(), time.monotonic()  # ... but never after it is dead
             t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
             w_zero = time.monotonic()
         finally:
@@ -81,10 +81,10 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
         assert t_zero is not None, "the drive stayed live after the host was killed"
         (wd,) = (t.wd for t in sim.device.tasks.values() if t.wd is not None)  # the dead host's task remains
         # the host's resets kept it alive up to the kill (however late a loaded machine ran them), and the device
-        # expired it exactly one timeout after the last reset, which came before the kill
+        # expired it exactly one timeout after the last reset, which came before the host died
         last_reset = wd.expired_at - TIMEOUT_RIG_S
-        assert last_reset <= t_kill < wd.expired_at
-        assert t_zero - t_kill <= TIMEOUT_RIG_S + 0.25 * SCALE  # seen by the poller within 0.25 s wall
+        assert last_reset <= t_kill and t_sent < wd.expired_at
+        assert t_zero - t_kill <= TIMEOUT_RIG_S + 1.0 * SCALE  # seen by this process's poller within a wall second
         with capsys.disabled():
             print(f"\nwatchdog: host killed -> drive 0 V after {t_zero - t_kill:.1f} rig s "
                   f"({w_zero - w_kill:.3f} wall s) at {SCALE:g}x; timeout {TIMEOUT_RIG_S:g} rig s")
@@ -102,11 +102,11 @@ def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
         rig = Daq(grpc_target=sim.address, watchdog_s=5.0, time_scale=SCALE)
         rig.run_finite(np.full(200, 1.0), 1000.0)
         assert rig.drive_readback_V() == pytest.approx(1.0, abs=1e-3)
-        t_lost = clock.now()
         sim.inject("disconnect")
+        t_lost = clock.now()  # after the cut: no reset reaches the device from here on
         assert rig.safe() is False  # cannot write 0 V over a dead link ...
         t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
-        assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 0.25 * SCALE  # ... the device does it
+        assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 1.0 * SCALE  # ... the device does it
         sim.clear_fault()
         assert readback_when_back(rig) == pytest.approx(0.0, abs=1e-3)
         assert rig.watchdog is not None and rig.watchdog.expired()
