@@ -106,7 +106,7 @@ def test_ao_returns_to_zero_after_close(sim: SimDaq) -> None:
 ])
 def test_ao_returns_to_zero_after_error_mid_record(sim: SimDaq, fault: str, exc: type, when: str) -> None:
     rig = Daq(grpc_target=sim.address)
-    drive = np.full(20_000, 2.0)  # 200 s simulated = 0.2 s wall
+    drive = np.full(100_000, 2.0)  # 1000 s simulated = 1 s wall: a watcher a loaded machine delays still lands mid-record
     seen: list[float] = []
 
     def watch() -> None:

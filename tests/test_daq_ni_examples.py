@@ -255,15 +255,17 @@ def test_watchdog_task_sequence(sim: SimDaq, channel: grpc.Channel) -> None:
             assert (state.ao_state, state.ao_output_type) == (0.0, WatchdogAOExpirState.VOLTAGE)
             assert wd.timeout == 2.0
             wd.start()
-            for _ in range(5):  # reset well within the timeout: no expiry over 3 timeouts
-                clock.sleep(1.2)
+            for _ in range(12):  # reset well within the timeout (1.5 rig s = 150 ms wall of slack for a loaded
+                clock.sleep(0.5)  # machine): no expiry over 3 timeouts
                 wd.reset_timer()
             assert not wd.expired and sim.ao_output_V() == 2.0
+            t_sent = clock.now()
+            wd.reset_timer()  # the last reset, received by the card between t_sent and t_last
             t_last = clock.now()
             while not wd.expired:
                 clock.sleep(0.1)
             expired_at = sim.device.tasks["wd"].wd.expired_at
-            assert expired_at - t_last == pytest.approx(2.0, abs=0.2)  # on the bench clock, from the last reset
+            assert t_sent + 2.0 <= expired_at <= t_last + 2.0  # one timeout on the bench clock after the last reset
             assert sim.ao_output_V() == 0.0
             for call, code in ((lambda: out.write(1.0), "WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED"),
                                (wd.reset_timer, "CANT_RESET_EXPIRED_WATCHDOG")):
@@ -281,11 +283,11 @@ def test_watchdog_task_sequence(sim: SimDaq, channel: grpc.Channel) -> None:
 
 def test_watchdog_expiry_voids_samples_computed_ahead(sim: SimDaq, channel: grpc.Channel) -> None:
     """A finite record running through the expiry reads the drive until the expiry, 0 V after it."""
-    fs, n = 1000.0, 4000
+    fs, n = 1000.0, 8000  # 8 rig s; the timer (3 rig s) expires mid-record even if ai.start comes 0.3 s wall late
     with new_task(channel, "ai") as ai, new_task(channel, "out") as out:
         out.ao_channels.add_ao_voltage_chan("SimDev1/ao0")
         out.write(1.5)
-        wd = WatchdogTask("SimDev1", "wd", timeout=1.0, grpc_options=opts(channel, "wd"))
+        wd = WatchdogTask("SimDev1", "wd", timeout=3.0, grpc_options=opts(channel, "wd"))
         try:
             wd.cfg_watchdog_ao_expir_states([AOExpirationState("SimDev1/ao0", 0.0, WatchdogAOExpirState.VOLTAGE)])
             ai.ai_channels.add_ai_voltage_chan("SimDev1/ai0")

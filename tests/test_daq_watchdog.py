@@ -24,6 +24,7 @@ from labrig.clock import ScaledClock
 from mock_devices.daq_grpc import SimDaq, StandInBench
 
 SCALE = 100.0  # rig seconds per wall second in these tests
+SEEN_WALL_S = 1.0  # how late a poller on a loaded machine may see the 0 V the card put out at its expiry
 TIMEOUT_RIG_S = max(5.0, WALL_FLOOR_S * SCALE)  # what Daq(watchdog_s=5) arms at this scale
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -74,17 +75,17 @@ def test_killed_host_leaves_the_drive_at_zero_within_the_watchdog_time(capsys: p
             host.send_signal(signal.SIGKILL)
             host.wait(5.0)
             t_kill, w_kill = clock.now(), time.monotonic()  # ... but never after it is dead
-            t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
+            t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE + SEEN_WALL_S)
             w_zero = time.monotonic()
         finally:
             host.kill()
         assert t_zero is not None, "the drive stayed live after the host was killed"
         (wd,) = (t.wd for t in sim.device.tasks.values() if t.wd is not None)  # the dead host's task remains
         # the host's resets kept it alive up to the kill (however late a loaded machine ran them), and the device
-        # expired it exactly one timeout after the last reset, which came before the host died
+        # expired it exactly one timeout after the last reset, which came before the kill
         last_reset = wd.expired_at - TIMEOUT_RIG_S
         assert last_reset <= t_kill and t_sent < wd.expired_at
-        assert t_zero - t_kill <= TIMEOUT_RIG_S + 1.0 * SCALE  # seen by this process's poller within a wall second
+        assert wd.expired_at <= t_zero <= t_kill + TIMEOUT_RIG_S + SEEN_WALL_S * SCALE  # 0 V out from the expiry on
         with capsys.disabled():
             print(f"\nwatchdog: host killed -> drive 0 V after {t_zero - t_kill:.1f} rig s "
                   f"({w_zero - w_kill:.3f} wall s) at {SCALE:g}x; timeout {TIMEOUT_RIG_S:g} rig s")
@@ -103,10 +104,12 @@ def test_lost_link_leaves_the_drive_at_zero_and_the_host_learns_it() -> None:
         rig.run_finite(np.full(200, 1.0), 1000.0)
         assert rig.drive_readback_V() == pytest.approx(1.0, abs=1e-3)
         sim.inject("disconnect")
-        t_lost = clock.now()  # after the cut: no reset reaches the device from here on
+        t_lost = clock.now()  # no reset reaches the card after this
         assert rig.safe() is False  # cannot write 0 V over a dead link ...
-        t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE)
-        assert t_zero is not None and t_zero - t_lost <= TIMEOUT_RIG_S + 1.0 * SCALE  # ... the device does it
+        t_zero = wait_for_zero(sim, 10 * TIMEOUT_RIG_S / SCALE + SEEN_WALL_S)
+        assert t_zero is not None  # ... the device does it, one timeout after the last reset at the latest
+        (wd,) = (t.wd for t in sim.device.tasks.values() if t.wd is not None)
+        assert wd.expired_at <= t_lost + TIMEOUT_RIG_S and wd.expired_at <= t_zero <= wd.expired_at + SEEN_WALL_S * SCALE
         sim.clear_fault()
         assert readback_when_back(rig) == pytest.approx(0.0, abs=1e-3)
         assert rig.watchdog is not None and rig.watchdog.expired()

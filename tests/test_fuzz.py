@@ -259,14 +259,14 @@ def test_serial_client_that_never_reads_does_not_stall_the_others():
         while (_queued(bad, "TIOCOUTQ") or _queued(server_side, "FIONREAD")) and time.monotonic() < deadline + 10:  # one serial line: let the server read them all first
             time.sleep(0.01)
         time.sleep(0.05)
-        good = socket.create_connection(("127.0.0.1", port), timeout=0.5)  # before: the server sat 1 s in sendall
+        good = socket.create_connection(("127.0.0.1", port), timeout=2.0)  # before: the server sat 1 s in sendall, then dropped the client
         for _ in range(20):
             good.sendall(b"M0\r")
             reply = b""
             while not reply.endswith(b"\r"):
                 reply += good.recv(64)
             assert reply.startswith(b"M0,"), reply
-        assert srv._clients and all(len(out) <= OUT_BUFFER_BYTES for out in srv._out.values())
+        assert server_side in srv._clients and all(len(out) <= OUT_BUFFER_BYTES for out in srv._out.values())
         bad.close()
         good.close()
 

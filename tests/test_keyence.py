@@ -101,7 +101,7 @@ def test_each_fault_gives_its_exception(rig, fault, exc):
     t0 = time.monotonic()
     with pytest.raises(exc) as info:
         k.read_displacement(1)
-    assert time.monotonic() - t0 < 1.0  # the timeout is the driver's, not a hang
+    assert time.monotonic() - t0 < 3.0  # the timeout is the driver's (0.5 s; room for a loaded machine), not a hang
     assert info.value.device == "keyence"
     if fault == "error":
         assert info.value.code == 99

@@ -105,7 +105,7 @@ def _steps_done(path):
 
 def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
     out = tmp_path / "s.h5"
-    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(STEP_TOML), "--sim", "--quiet", "--time-scale", "10",
+    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(STEP_TOML), "--sim", "--quiet", "--time-scale", "40",
                              "--out", str(out)], stderr=subprocess.PIPE, text=True)
     try:
         deadline = time.time() + 60
@@ -115,7 +115,7 @@ def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
         while _steps_done(out)[1] < 1 and time.time() < deadline:
             time.sleep(0.05)
         done_at_hold = _steps_done(out)[0]
-        time.sleep(1.5)  # 15 rig seconds: the 5 s settle would be over if it ran
+        time.sleep(1.0)  # 40 rig seconds: the 5 s settle and the 10 s step would be over if they ran
         assert _steps_done(out) == (done_at_hold, 1) and proc.poll() is None
         proc.send_signal(signal.SIGUSR1)
         assert proc.wait(60) == 0, proc.stderr.read()

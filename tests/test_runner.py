@@ -194,5 +194,5 @@ def test_load_cell_staleness_is_counted_in_rig_seconds():
             while time.monotonic() - t0 < 5.0:
                 lc.force()
                 time.sleep(0.005)
-        assert time.monotonic() - t0 < 1.0  # not 50 wall seconds
+        assert time.monotonic() - t0 < 5.0  # 50 ms wall (room for a loaded machine), not 50 wall seconds
 

@@ -10,7 +10,7 @@ Executors:
   of 100 takes as long as half of it and shipping chunks only adds (bench/hammerstein.py);
 * ``"inline"``: always in-process;  ``"process"``: always the local pool;
 * any ``concurrent.futures.Executor`` you pass (you keep ownership; args are pickled every call);
-* a ``dask.distributed.Client``: args are scattered once (broadcast) and chunks go through
+* a ``dask.distributed.Client``: args are scattered once (each under a key of its own) and chunks go through
   ``client.map`` / ``client.gather``; recognised by duck typing, so dask is imported only by its user.
 For a local pool, args are installed once per worker by the pool initializer rather than per call.
 """
@@ -93,8 +93,11 @@ class PopulationMap:
             pool = self._local_pool()
             parts = list(pool.map(_run_installed, [self.fn] * len(chunks), [id(self)] * len(chunks), chunks))
         elif is_dask_client(ex):
-            if self._scattered is None:  # ship the data once; later calls pass futures
-                self._scattered = [ex.scatter(a, broadcast=True) for a in self.args]
+            if self._scattered is None:  # ship the data once; later calls pass futures. A key of its own
+                # (hash=False): a content-hashed key is shared with an earlier map of the same data, whose release can
+                # forget it mid-scatter ("lost dependencies"); no broadcast (replicate() is fragile, dask/distributed
+                # #6578): each worker fetches it once, with its first chunk
+                self._scattered = [ex.scatter(a, hash=False) for a in self.args]
             n = sum(w.get("nthreads", 1) for w in ex.scheduler_info()["workers"].values()) or 1
             chunks = self._chunks(X, n)
             futs = [ex.submit(_run, self.fn, c, *self._scattered, pure=False) for c in chunks]
