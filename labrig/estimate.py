@@ -55,10 +55,10 @@ def _design(t: np.ndarray, f: float, harmonics: int, trend: int) -> np.ndarray:
 
 def _whole_cycles(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
     fs = 1.0 / np.median(np.diff(t))
-    start = int(round(skip_cycles / f * fs))
+    start = min(int(round(skip_cycles / f * fs)), t.size)
     n_cyc = int(np.floor((t.size - start) * f / fs)) if cycles is None else int(cycles)
-    n = int(round(n_cyc / f * fs))
-    return slice(start, start + n)
+    n = int(round(max(n_cyc, 0) / f * fs))  # a record shorter than its settling cycles has none left: empty
+    return slice(start, min(start + n, t.size))
 
 
 def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: float | None = None, harmonics: int = 5) -> SineEstimate:
@@ -482,7 +482,7 @@ def sine_gain_rate(t: np.ndarray, v: np.ndarray, x: np.ndarray, f: float, skip_c
     t = np.asarray(t, float)
     sl = _whole_cycles(t, f, skip_cycles, None)
     tt = t[sl]
-    T = float(np.ptp(tt))
+    T = float(np.ptp(tt)) if tt.size else 0.0  # an imported record may hold fewer cycles than the settling ones
     if tt.size < 16 or T * f < 2:
         return complex("nan"), float("nan"), T
     s = (tt - tt.mean()) / T
