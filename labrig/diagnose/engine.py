@@ -20,7 +20,7 @@ from scipy.optimize import least_squares
 
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
 from labrig.diagnose.families import FAMILIES
-from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for
+from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import Refit, refit
 from labrig.diagnose.verdict import STRUCTURE_MARGIN, structured, where as locate_misses
 from labrig.fit.session_data import SessionData
@@ -71,7 +71,8 @@ def build_context(feats: Features, specimens: dict, group: set) -> Context:
     any_sp = next(iter(specimens.values()))
     area = any_sp.geometry.clamp_area
     nominal = np.array([(s.pressure_kPa or 0.0) * 1e3 * area for s in sines])
-    return Context(feats, specimens, sines, steps, lines, Hd, Hi, Hd3, sd, si, nominal, area, any_sp.geometry.length)
+    timing = [step_timing_sigma(specimen_for(specimens, st.pressure_kPa), st) for st in steps]
+    return Context(feats, specimens, sines, steps, lines, Hd, Hi, Hd3, sd, si, nominal, area, any_sp.geometry.length, step_timing=timing)
 
 
 def _force_rel(ctx: Context) -> tuple[np.ndarray, np.ndarray]:
@@ -105,9 +106,10 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
         out["force"] = (r[ok] / sig[ok], np.zeros(0))  # evidence only: not a signal error
     for k, st in enumerate(ctx.steps):
         w = math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))
-        for key, pr, me, nz in (("step_d", pred.step_d[k], st.d, st.noise_d), ("step_i", pred.step_i[k], st.i, st.noise_i)):
+        edge = ctx.step_timing[k] if k < len(ctx.step_timing) else (0.0, 0.0)
+        for key, pr, me, nz, tm in (("step_d", pred.step_d[k], st.d, st.noise_d, edge[0]), ("step_i", pred.step_i[k], st.i, st.noise_i, edge[1])):
             rms = float(np.sqrt(np.mean(me**2))) or 1.0
-            sig = _step_sigma(nz, rms)
+            sig = np.sqrt(_step_sigma(nz, rms) ** 2 + np.square(tm))  # noise, model floor, where the edge fell in its sample
             r = pr - me
             prev = out.get(key, (np.zeros(0), np.zeros(0)))
             out[key] = (np.r_[prev[0], r / sig / w], np.r_[prev[1], r / rms / w * 3])

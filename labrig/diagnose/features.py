@@ -174,6 +174,23 @@ def predict_step(sp: Specimen, st: StepFeature, drive: np.ndarray | None = None)
     return st.decimate(d), st.decimate(i)
 
 
+def step_timing_sigma(sp: Specimen, st: StepFeature) -> tuple[np.ndarray, np.ndarray]:
+    """How much the step prediction (displacement, current; at the compared rate) depends on where within its
+    sample the drive's edge fell: the prediction half a sample later, minus the prediction, block
+    averaged. Small away from the edges; at the edges the current's spike of an RC strip lives within one sample, and
+    a record sampled slowly (an averaging ADC's block means, an import at half the rate) cannot place it better.
+    Added in quadrature to the step's noise: the sampling's own uncertainty, not a threshold."""
+    if st.fs_full <= 0 or st.v_full.size == 0:
+        return np.zeros(st.t.size), np.zeros(st.t.size)
+    half = 0.5 / st.fs_full
+    tfs = [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)]
+    shifted = [lambda s, h=h: h(s) * np.exp(-s * half) for h in tfs]
+    # shifted in the frequency domain, as the prediction itself is made: the band-limited response to an edge
+    # within a sample differs from the block means of a faster record in the spike and in its sinc tails
+    d, i, d2, i2 = timeresp.simulate_many([*tfs, *shifted], st.v_full, st.fs_full)
+    return np.abs(st.decimate(d2 - d)), np.abs(st.decimate(i2 - i))
+
+
 def predict_sines(sp: Specimen, sines: list[SineFeature]) -> tuple[np.ndarray, np.ndarray]:
     f = np.array([s.f for s in sines])
     return transfer.frf(f, sp), transfer.admittance_tf(2j * np.pi * f, sp)
