@@ -69,3 +69,26 @@ def test_the_step_current_edge_at_half_the_rate_is_within_the_sampling_uncertain
         assert np.sqrt(np.mean(timing[ch][(st.t > 3) & (st.t < 29)] ** 2)) < s0
         if ch == "i":
             assert timing[ch].max() > 10 * s0
+
+
+def test_the_spectra_scatter_is_their_own_noise_block():
+    """A spectrum's noise from its own point-to-point scatter (issue 12 item 1): a smooth CPE-like spectrum of 31
+    points with 0.3 % and 2 % relative noise per component is read back within 30 %; the eis block's residual is
+    in those units, so the same misfit counts less on the noisier spectrum."""
+    from types import SimpleNamespace
+
+    from labrig.diagnose.features import SpectrumFeature, spectrum_scatter
+
+    f = np.logspace(-1, 4, 31)
+    Z = 50 + 1 / ((2j * np.pi * f) ** 0.6 * 0.2)
+    rng = np.random.default_rng(5)
+    levels = []
+    for rel in (0.003, 0.02):
+        noisy = Z * np.exp(rng.normal(0, rel, f.size) + 1j * rng.normal(0, rel, f.size))
+        est = spectrum_scatter(noisy)
+        assert abs(est / rel - 1) < 0.3, (rel, est)  # 31 points: the estimate itself scatters by ~12 %
+        off = noisy * 1.02  # the same 2 % misfit of the baseline
+        ctx = SimpleNamespace(sines=[], steps=[], lines=[], spectra=[(SpectrumFeature(612.0, f, noisy, est), off)])
+        r = engine.blocks(None, ctx)["eis"][0]
+        levels.append(float(np.sqrt(np.mean(r**2))))
+    assert levels[0] > 3 * levels[1] and engine.noise_levels(ctx)["eis"] > 0.9
