@@ -301,8 +301,6 @@ FAMILIES["dehydration"] += [
           "gain and conductance falling linearly with session time from levels of their own (zero-order evaporation)"),
     _form("dehydration", "saturating", (*_DRY, "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.3), (0.5, -0.5, 0.5, -0.5, 0.03), (2.0, 0.9, 2.0, 0.9, 5.0),
           _drying(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
-    _form("dehydration", "sigmoid", (*_DRY, "centre_spans", "width_spans"), (1.0, 0.2, 1.0, 0.1, 0.5, 0.15), (0.5, -0.5, 0.5, -0.5, 0.0, 0.1),
-          (2.0, 0.9, 2.0, 0.9, 1.0, 0.5), _drying(_sigmoid), "gain and conductance lost along a logistic in session time (a drying front)"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
 FAMILIES["clamp_relaxation"] += [
