@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import math
+
 import numpy as np
 
 
@@ -55,15 +57,30 @@ def _design(t: np.ndarray, f: float, harmonics: int, trend: int) -> np.ndarray:
 
 def _whole_cycles(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
     fs = 1.0 / np.median(np.diff(t))
-    start = int(round(skip_cycles / f * fs))
+    start = min(int(round(skip_cycles / f * fs)), t.size)
     n_cyc = int(np.floor((t.size - start) * f / fs)) if cycles is None else int(cycles)
-    n = int(round(n_cyc / f * fs))
-    return slice(start, start + n)
+    n = int(round(max(n_cyc, 0) / f * fs))  # a record shorter than its settling cycles has none left: empty
+    return slice(start, min(start + n, t.size))
+
+
+def _demod_span(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
+    """The samples to demodulate: the whole cycles after ``skip_cycles``; in a record too short for them (an imported
+    0.4 Hz record of 4 s holds 1.6 cycles) its last whole cycles (the start's transient has decayed most there), and a record shorter
+    than a cycle whole (the least-squares model with its trend does not need whole cycles, only less accuracy)."""
+    t = np.asarray(t)
+    span = (t[-1] - t[0]) * f if t.size > 1 else 0.0
+    if span < 1.0:
+        return slice(0, t.size)
+    sl = _whole_cycles(t, f, skip_cycles, cycles)
+    if sl.stop - sl.start < 16 or (t[sl.stop - 1] - t[sl.start]) * f < 0.9:
+        n = int(round(math.floor(span + 0.01) / f / float(np.median(np.diff(t)))))  # the last whole cycles: least transient
+        sl = slice(max(t.size - n, 0), t.size)
+    return sl
 
 
 def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: float | None = None, harmonics: int = 5) -> SineEstimate:
     """Demodulate a stepped-sine or harmonic record after its settling cycles."""
-    sl = _whole_cycles(np.asarray(t), f, settle_cycles, cycles)
+    sl = _demod_span(np.asarray(t), f, settle_cycles, cycles)
     tt, vv, ii, dd = (np.asarray(a)[sl] for a in (t, v, i, d))
     per_cycle_d, per_cycle_i = [], []
     fs = 1.0 / np.median(np.diff(tt))
@@ -482,7 +499,7 @@ def sine_gain_rate(t: np.ndarray, v: np.ndarray, x: np.ndarray, f: float, skip_c
     t = np.asarray(t, float)
     sl = _whole_cycles(t, f, skip_cycles, None)
     tt = t[sl]
-    T = float(np.ptp(tt))
+    T = float(np.ptp(tt)) if tt.size else 0.0  # an imported record may hold fewer cycles than the settling ones
     if tt.size < 16 or T * f < 2:
         return complex("nan"), float("nan"), T
     s = (tt - tt.mean()) / T
@@ -605,7 +622,7 @@ def step_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, t_on: float, t_off
 
 def harmonic_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, f: float, skip_cycles: float = 1.0) -> tuple[float, float]:
     """(displacement amplitude in m, phase lag of displacement behind the drive in degrees) after ``skip_cycles``."""
-    sl = _whole_cycles(np.asarray(t), f, skip_cycles, None)
+    sl = _demod_span(np.asarray(t), f, skip_cycles, None)
     a_v = demodulate(np.asarray(t)[sl], np.asarray(v)[sl], f)[0]
     a_d = demodulate(np.asarray(t)[sl], np.asarray(d)[sl], f)[0]
     return float(abs(a_d)), float(-np.degrees(np.angle(a_d / a_v)))

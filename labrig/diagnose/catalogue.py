@@ -39,6 +39,8 @@ class Context:
     base: "Prediction | None" = None  # accepted effects so far: extensions build on it (forward selection)
     chain: list = field(default_factory=list)  # (extension, theta) of those effects, to rebuild base on new mechanics
     cache: dict = field(default_factory=dict)  # what an extension precomputes once per context (it depends on the specimens only)
+    step_timing: list = field(default_factory=list)  # per step: (displacement, current) sampling uncertainty at the edges
+    spectra: list = field(default_factory=list)  # (SpectrumFeature, the baseline's Z there): no extension changes Z
 
 
 @dataclass

@@ -19,7 +19,8 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline
-from labrig.physics import timeresp
+from labrig.diagnose.features import specimen_for
+from labrig.physics import timeresp, transfer
 
 _N = 64
 _TH = 2 * np.pi * np.arange(_N) / _N
@@ -133,6 +134,131 @@ def _strain_modulation(th, ctx: Context):
     return p
 
 
+# ------------------------------------------------------------------------------------------ drying
+
+
+def _drying(shape):
+    """Water loss over the session with a shape x(u) in 0..1 (u: session time over its span): the displacement's
+    gain falls by k_d x and the conductance by k_i x (one loss of water: the mobile ions' share dries with it, more
+    slowly or faster), each from a level of its own. The level is free because the baseline's alpha and
+    electrical values were fitted on data already drying: they hold the session's average, not the wet strip."""
+
+    def apply(th, ctx: Context):
+        lev_d, k_d, lev_i, k_i, *sh = th
+        p = baseline(ctx)
+        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+        u = lambda t: np.clip((t - ctx.feats.t0) / span, 0.0, 1.0)  # noqa: E731
+        for k, s in enumerate(ctx.sines):
+            x = shape(u(s.t_start), sh)
+            p.Hd[k] *= lev_d * (1 - k_d * x)
+            p.Hi[k] *= lev_i * (1 - k_i * x)
+        for k, st in enumerate(ctx.steps):
+            x = shape(u(st.t_start + (st.t - st.t[0])), sh)  # the loss runs on during a long step record
+            p.step_d[k] = p.step_d[k] * lev_d * (1 - k_d * x)
+            p.step_i[k] = p.step_i[k] * lev_i * (1 - k_i * x)
+        return p
+
+    return apply
+
+
+def _linear(u, sh):
+    """Zero order: evaporation at a constant vapour-pressure deficit removes water at a constant rate."""
+    return u
+
+
+def _saturating(u, sh):
+    """First order towards the room's equilibrium water content, time constant tau (in session spans)."""
+    (tau,) = sh
+    return -np.expm1(-u / tau) / -np.expm1(-1.0 / tau)
+
+
+def _sigmoid(u, sh):
+    """A loss that sets in late and runs its course (the surface film first, then the bulk past a drying front):
+    a logistic in session time, centre m, width w (session spans), 0 at the start. w >= 0.1: a narrower front
+    cannot be told from a step in gain between two pressures' blocks of records, which any per-pressure misfit is."""
+    m, w = sh
+    f = lambda x: 1.0 / (1.0 + np.exp(-(x - m) / w))  # noqa: E731
+    return (f(u) - f(0.0)) / (f(1.0) - f(0.0))
+
+
+# ------------------------------------------------------------------------------------------ clamp creep
+
+
+def _creep(shape):
+    """The clamp's force relaxes as the polymer under it creeps, F/F0 = 1 - r c(t / tau), t from the pressure's
+    first record; K_t bar and the gain follow the force the load cell reads (as ``catalogue._clamp_relaxation``)."""
+
+    def apply(th, ctx: Context):
+        loss, tau, b_kt, b_gain, *sh = th
+        p = baseline(ctx)
+        first: dict = {}
+        for s in ctx.sines:
+            first[s.pressure_kPa] = min(first.get(s.pressure_kPa, np.inf), s.t_start)
+        for k, s in enumerate(ctx.sines):
+            p.force_rel[k] = -loss * shape(max(s.t_start - first[s.pressure_kPa], 0.0) / tau, sh)
+            if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
+                continue
+            rel = s.force_mean / ctx.force_nominal[k]
+            sp = specimen_for(ctx.specimens, s.pressure_kPa)
+            p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt))[0] * rel**b_gain
+        return p
+
+    return apply
+
+
+def _log_creep(x, sh):
+    """A flat spectrum of relaxation times (a glassy polymer): the force falls with log time, ln(1 + t/tau)."""
+    return np.log1p(x)
+
+
+def _power_creep(x, sh):
+    """Nutting's law (t/tau)^n, 0 < n < 1: a power-law spectrum of relaxation times (scale-free creep)."""
+    (n,) = sh
+    return x**n
+
+
+# ------------------------------------------------------------------------------------------ smooth memory, sensor side
+
+
+def _bouc_wen(d: np.ndarray, z_u: float, q: float) -> np.ndarray:
+    """Bouc-Wen state (n = 1) driven by d along its last axis, from z = 0: dz = dd (1 - |z| (b sgn(dd z) + g)) with
+    b + g = 1/z_u (z saturates at z_u) and q = (b - g)/(b + g) the loop's shape (q = 1: z stays on d while the
+    reading unloads, q = 0: the same law both ways). Forward Euler in the drive's own increments."""
+    b, g = (1 + q) / (2 * z_u), (1 - q) / (2 * z_u)
+    dd = np.diff(d, axis=-1, prepend=d[..., :1])
+    z = np.zeros(d.shape[:-1])
+    out = np.empty_like(d)
+    for k in range(d.shape[-1]):
+        step = dd[..., k]
+        z = z + step * np.maximum(1 - np.abs(z) * (b * np.sign(step * z) + g), 0.0)
+        out[..., k] = z
+    return out
+
+
+def _bouc_wen_output(th, ctx: Context):
+    """Memory in the displacement path as a smooth loop: the spot's mount (or its contact on the tip) takes up a
+    part z of the tip's motion until friction lets it slip, z the Bouc-Wen state of the tip's displacement bounded
+    by z_u; the reading is y = d - w z. Small motions lose a share w of the gain, large ones an error bounded by
+    w z_u, with a loop in between (the smooth kin of a play in the sensor path). The sines' fundamental and 3rd
+    harmonic over the second of two periods at each sine's amplitude (describing function), the step at its
+    compared rate."""
+    w, zu_um, q = th
+    z_u = zu_um * 1e-6
+    p = baseline(ctx)
+    if ctx.sines:
+        y = p.Hd * np.array([_drive(s) for s in ctx.sines])
+        a = np.abs(y)
+        ph = np.linspace(0, 4 * np.pi, 2 * _N, endpoint=False)
+        z = _bouc_wen(a[:, None] * np.cos(ph)[None, :], z_u, q)[:, _N:]
+        c = np.fft.fft(z, axis=1)[:, [1, 3]] * 2 / _N
+        g1 = 1 - w * c[:, 0] / a
+        p.hd[:, 1] = p.hd[:, 1] - w * c[:, 1] / a / g1 * (y / a) ** 2
+        p.Hd = p.Hd * g1
+    for k, d in enumerate(p.step_d):
+        p.step_d[k] = d - w * _bouc_wen(d, z_u, q)
+    return p
+
+
 # ------------------------------------------------------------------------------------------ lag
 
 
@@ -167,7 +293,26 @@ FAMILIES["faradaic_current"] += [
 FAMILIES["hysteresis"] += [
     # the baseline's mechanics took in the gain and phase the play costs at each pressure's amplitudes: refitted with it
     _form("hysteresis", "play_output", ("weight", "play_um"), (0.3, 50.0), (0.0, 0.1), (1.0, 5000.0), _play_output,
-          "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side", refit_mechanics=True),
+          "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side"),
+]
+_DRY = ("gain_level", "gain_loss", "conductance_level", "conductance_loss")
+FAMILIES["dehydration"] += [
+    _form("dehydration", "linear", _DRY, (1.0, 0.2, 1.0, 0.1), (0.5, -0.5, 0.5, -0.5), (2.0, 0.9, 2.0, 0.9), _drying(_linear),
+          "gain and conductance falling linearly with session time from levels of their own (zero-order evaporation)"),
+    _form("dehydration", "saturating", (*_DRY, "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.3), (0.5, -0.5, 0.5, -0.5, 0.03), (2.0, 0.9, 2.0, 0.9, 5.0),
+          _drying(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
+]
+_CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
+FAMILIES["clamp_relaxation"] += [
+    _form("clamp_relaxation", "log_creep", _CREEP, (0.02, 30.0, 1.0, 0.0), (-0.2, 0.5, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0),
+          _creep(_log_creep), "clamp force creeping with log time, F = F0 (1 - r ln(1 + t/tau)); K_t bar and gain follow it"),
+    _form("clamp_relaxation", "power_creep", (*_CREEP, "exponent"), (0.03, 600.0, 1.0, 0.0, 0.4), (-0.2, 20.0, -10.0, -10.0, 0.05),
+          (0.6, 1e4, 10.0, 10.0, 1.0), _creep(_power_creep), "clamp force creeping as a power of time (Nutting), F = F0 (1 - r (t/tau)^n)"),
+]
+FAMILIES["hysteresis"] += [
+    _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
+          _bouc_wen_output, "Bouc-Wen loop in the displacement path, y = d - w z(d), |z| <= z_sat: smooth memory on the sensor side",
+          refit_mechanics=True),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",

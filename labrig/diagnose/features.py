@@ -83,11 +83,39 @@ class LineFeature:
 
 
 @dataclass
+class SpectrumFeature:
+    """One impedance spectrum and its own scatter: the relative noise of a point, from the residual of each
+    component (log |Z|, phase) about a local quadratic in the point's index (Savitzky-Golay, 5 points)."""
+
+    pressure_kPa: float | None
+    f: np.ndarray
+    Z: np.ndarray
+    noise_rel: float
+
+
+def spectrum_scatter(Z: np.ndarray) -> float:
+    """Relative noise per component of a spectrum from its own point-to-point scatter: the RMS residual about a
+    5-point quadratic over sqrt(1 - 17/35), the residual's share of a point's variance there (31 points: the
+    estimate scatters by ~15 %; a smooth spectrum's own curvature leaves ~1e-6)."""
+    from scipy.signal import savgol_filter
+
+    if Z.size < 7:
+        return float("nan")
+    var = []
+    for x in (np.log(np.abs(Z)), np.unwrap(np.angle(Z))):
+        r = (x - savgol_filter(x, 5, 2))[2:-2]
+        var.append(float(np.mean(r**2)) / (1 - 17 / 35))
+    return float(np.sqrt(np.mean(var)))
+
+
+@dataclass
 class Features:
+    spectra: list[SpectrumFeature] = field(default_factory=list)
     sines: list[SineFeature] = field(default_factory=list)
     steps: list[StepFeature] = field(default_factory=list)
     lines: list[LineFeature] = field(default_factory=list)
     t0: float = 0.0  # earliest record start (s, rig clock)
+    t1: float = 1.0  # latest record end (s, rig clock)
 
     def pressures(self) -> list[float]:
         ps = {s.pressure_kPa for s in self.sines} | {s.pressure_kPa for s in self.steps}
@@ -134,6 +162,12 @@ def extract(sd: SessionData) -> Features:
     records = sd.all_records()
     starts = [r.t_start for r in records if np.isfinite(r.t_start)]
     feats.t0 = min(starts) if starts else 0.0
+    for pd in sd.pressures:
+        if pd.eis is not None and np.size(pd.eis[0]) >= 7:
+            f, Z = np.asarray(pd.eis[0], float), np.asarray(pd.eis[1], complex)
+            feats.spectra.append(SpectrumFeature(pd.pressure_kPa, f, Z, spectrum_scatter(Z)))
+    ends = [r.t_start + float(r.t[-1] - r.t[0]) for r in records if np.isfinite(r.t_start) and r.t.size]
+    feats.t1 = max(ends) if ends else feats.t0 + 1.0
     first_step: set[float | None] = set()
     for r in records:
         p = r.meta.get("pressure_kPa")
@@ -172,6 +206,23 @@ def predict_step(sp: Specimen, st: StepFeature, drive: np.ndarray | None = None)
     v = st.v_full if drive is None else drive
     d, i = timeresp.simulate_many([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], v, st.fs_full)
     return st.decimate(d), st.decimate(i)
+
+
+def step_timing_sigma(sp: Specimen, st: StepFeature) -> tuple[np.ndarray, np.ndarray]:
+    """How much the step prediction (displacement, current; at the compared rate) depends on where within its
+    sample the drive's edge fell: the prediction half a sample later, minus the prediction, block
+    averaged. Small away from the edges; at the edges the current's spike of an RC strip lives within one sample, and
+    a record sampled slowly (an averaging ADC's block means, an import at half the rate) cannot place it better.
+    Added in quadrature to the step's noise: the sampling's own uncertainty, not a threshold."""
+    if st.fs_full <= 0 or st.v_full.size == 0:
+        return np.zeros(st.t.size), np.zeros(st.t.size)
+    half = 0.5 / st.fs_full
+    tfs = [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)]
+    shifted = [lambda s, h=h: h(s) * np.exp(-s * half) for h in tfs]
+    # shifted in the frequency domain, as the prediction itself is made: the band-limited response to an edge
+    # within a sample differs from the block means of a faster record in the spike and in its sinc tails
+    d, i, d2, i2 = timeresp.simulate_many([*tfs, *shifted], st.v_full, st.fs_full)
+    return np.abs(st.decimate(d2 - d)), np.abs(st.decimate(i2 - i))
 
 
 def predict_sines(sp: Specimen, sines: list[SineFeature]) -> tuple[np.ndarray, np.ndarray]:

@@ -43,6 +43,10 @@ def abscissa(name: str, ctx, size: int) -> tuple[np.ndarray, str, bool, np.ndarr
         x = np.concatenate([st.t - st.t[0] for st in ctx.steps]) if ctx.steps else np.zeros(0)
         lab = np.concatenate([np.full(st.t.size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x
         return x, "time from record start (s)", False, lab
+    if name == "eis" and getattr(ctx, "spectra", None) and size == 2 * sum(sp.f.size for sp, _ in ctx.spectra):
+        f = np.concatenate([sp.f for sp, _ in ctx.spectra])
+        lab = np.concatenate([np.full(sp.f.size, _pressure_label(sp.pressure_kPa), dtype=object) for sp, _ in ctx.spectra])
+        return np.tile(f, 2), "spectrum frequency (Hz)", True, np.tile(lab, 2)
     if name == "line":
         series = np.array([f"{'displacement' if ch == 'd' else 'current'} {hz:g} Hz" for line in ctx.lines
                            for (ch, hz), fl in line.floor.items() if np.isfinite(fl) and fl > 0], dtype=object)
@@ -76,6 +80,12 @@ def locate(name: str, r: np.ndarray, ctx) -> dict[str, Any]:
         lo, hi, worst = _span(x[:n], mag)
         unit = "Hz" if "frequency" in label else "V"
         return {"detail": f"{lo:.3g}-{hi:.3g} {unit}, worst at {worst:.3g} {unit}", "band": [lo, hi], "worst": worst}
+    if name == "eis" and label != "feature index":
+        n = r.size // 2
+        mag = np.hypot(r[:n], r[n:])
+        lo, hi, worst = _span(x[:n], mag)
+        return {"detail": f"{lo:.3g}-{hi:.3g} Hz of the spectra, worst at {worst:.3g} Hz ({series[int(np.argmax(mag))]})",
+                "band": [lo, hi], "worst": worst}
     if name in ("harm_d", "harm_i") and label != "feature index":
         n = r.size // 2
         mag = np.hypot(r[:n], r[n:])  # (sine, order) interleaved: 2f, 3f per sine
