@@ -17,6 +17,7 @@ from labrig.estimate import SineEstimate, sine_estimate
 from labrig.fit.session_data import SessionData, TimeRecord, sine_cycles, step_onset
 from labrig.physics import timeresp, transfer
 from labrig.physics.params import Specimen
+from labrig.records import SINE_KINDS
 
 STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of interest are slow)
 LINE_HZ = (50.0, 60.0)
@@ -173,7 +174,7 @@ def extract(sd: SessionData) -> Features:
         p = r.meta.get("pressure_kPa")
         p = float(p) if p is not None else None
         slope, fmean, slope_sigma = _force_slope(r)
-        if r.kind in ("stepped_sine", "harmonic") and "frequency_Hz" in r.meta:
+        if r.kind in SINE_KINDS and "frequency_Hz" in r.meta:
             f = float(r.meta["frequency_Hz"])
             est = sine_estimate(r.t, r.v, r.i, r.d, f, *sine_cycles(r))
             amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
