@@ -34,7 +34,7 @@ from labrig.importer import EIS_REQUIRED, Record
 from labrig.records import DATA_KINDS, RecordKind
 from labrig.specimen import Specimen
 
-RECORD_KEYS = ("frequency_Hz", "amplitude_V", "period_s", "temperature_C")  # optional manifest keys taken from the metadata
+RECORD_KEYS = ("frequency_Hz", "amplitude_V", "period_s", "temperature_C", "settle_cycles", "cycles")  # optional manifest keys taken from the metadata
 
 
 @dataclass
@@ -80,7 +80,7 @@ def manifest_entry(kind: str, file: str, name: str, meta: dict[str, Any]) -> tup
     entry["pressure_kPa"] = float(meta["pressure_kPa"])
     for key in RECORD_KEYS:
         value = meta.get(key)
-        if isinstance(value, (int, float)) and math.isfinite(value) and (value > 0 or key == "temperature_C"):
+        if isinstance(value, (int, float)) and math.isfinite(value) and (value > 0 or key in ("temperature_C", "settle_cycles")):
             entry[key] = float(value)  # a negative step amplitude is no manifest value: the drive column says it
     try:
         Record.model_validate(entry)

@@ -57,6 +57,9 @@ class Record(StrictModel):
     amplitude_V: float | None = Field(default=None, gt=0, le=1000.0)
     period_s: float | None = Field(default=None, gt=0, le=1e6)
     temperature_C: float | None = Field(default=None, gt=-273.15, le=1000.0)
+    # a sine record's layout, when the source knows it: cycles to skip while it settles, cycles measured after them
+    settle_cycles: float | None = Field(default=None, ge=0, le=1e4)
+    cycles: float | None = Field(default=None, gt=0, le=1e6)
     label: Text | None = Field(default=None, min_length=1)
 
     @model_validator(mode="after")

@@ -125,3 +125,22 @@ def test_bad_input_through_the_real_command_line(tmp_path):
     r = run_cli("import", tmp_path / "ex" / "manifest.toml", "--out", tmp_path / "s.h5")
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
     assert "p612_eis.csv: line 3, column z_re_ohm: inf" in r.stderr
+
+
+def test_a_sine_records_layout_is_read_when_the_manifest_says_it(tmp_path):
+    """`settle_cycles` and `cycles` (what `labrig export` writes from the runner's metadata) set where the estimator
+    demodulates; without them it guesses a third of the whole cycles as settling."""
+    from labrig.fit.session_data import load_session, sine_cycles
+
+    shutil.copytree(EXAMPLE, tmp_path / "m")
+    manifest = tmp_path / "m" / "manifest.toml"
+    said = manifest.read_text().replace('label = "p612/sine_2Hz"', 'label = "p612/sine_2Hz"\nsettle_cycles = 0\ncycles = 6')
+    got = []
+    for text in (manifest.read_text(), said):
+        manifest.write_text(text)
+        out = tmp_path / f"s{len(text)}.h5"
+        assert main(["import", str(manifest), "--out", str(out)]) == 0
+        (rec,) = [r for p in load_session(out).pressures for r in p.records if r.kind == "stepped_sine"]
+        got.append(sine_cycles(rec))
+    assert got[0][0] >= 2 and got[0][1] is None  # 4 s at 2 Hz: a third of its 7-8 whole cycles guessed as settling
+    assert got[1] == (0.0, 6.0)
