@@ -217,19 +217,47 @@ def frf_by_pressure(sines: list[SineFeature], specimens: dict[float, Specimen]) 
     return out
 
 
-def _clamp_relaxation(th, ctx):
-    loss, tau, b_kt, b_gain = th
-    p = baseline(ctx)
+def force_following_frf(ctx: Context, b_kt: float) -> tuple[np.ndarray, np.ndarray]:
+    """Per sine: the force the load cell read over the clamp target, rel = F/F0 (nan where unknown), and the
+    baseline FRF with K_t bar following it, K_t bar rel^b_kt. Cached per exponent in ``ctx.cache``: a
+    finite-difference Jacobian moves one parameter at a time, so most of a fit's evaluations share b_kt."""
+    key = ("force_following_frf", float(b_kt))
+    hit = ctx.cache.get(key)
+    if hit is None:
+        rel = np.full(len(ctx.sines), np.nan)
+        Hd = np.full(len(ctx.sines), np.nan, dtype=complex)
+        for k, s in enumerate(ctx.sines):
+            if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
+                continue
+            rel[k] = s.force_mean / ctx.force_nominal[k]
+            sp = specimen_for(ctx.specimens, s.pressure_kPa)
+            Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel[k] ** b_kt))[0]
+        if sum(1 for c in ctx.cache if c[0] == "force_following_frf") >= 64:  # a fit's old exponents: drop the oldest
+            del ctx.cache[next(c for c in ctx.cache if c[0] == "force_following_frf")]
+        hit = ctx.cache[key] = (rel, Hd)
+    return hit
+
+
+def creep_since_first_record(ctx: Context) -> np.ndarray:
+    """Per sine: rig seconds since the first sine record at its pressure (the clamp settled there)."""
     first: dict = {}
     for s in ctx.sines:
         first[s.pressure_kPa] = min(first.get(s.pressure_kPa, np.inf), s.t_start)
-    for k, s in enumerate(ctx.sines):
-        p.force_rel[k] = -loss * (1.0 - np.exp(-max(s.t_start - first[s.pressure_kPa], 0.0) / tau))
-        if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
-            continue
-        rel = s.force_mean / ctx.force_nominal[k]  # K_t bar and the gain follow the force the load cell reads
-        sp = specimen_for(ctx.specimens, s.pressure_kPa)
-        p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt))[0] * rel**b_gain
+    return np.array([max(s.t_start - first[s.pressure_kPa], 0.0) for s in ctx.sines])
+
+
+def follow_force(p: "Prediction", ctx: Context, b_kt: float, b_gain: float) -> None:
+    """K_t bar and the gain follow the force the load cell reads: Hd = H(K_t bar rel^b_kt) rel^b_gain."""
+    rel, Hd = force_following_frf(ctx, b_kt)
+    ok = np.isfinite(rel)
+    p.Hd[ok] = Hd[ok] * rel[ok] ** b_gain
+
+
+def _clamp_relaxation(th, ctx):
+    loss, tau, b_kt, b_gain = th
+    p = baseline(ctx)
+    p.force_rel[:] = -loss * (1.0 - np.exp(-creep_since_first_record(ctx) / tau))
+    follow_force(p, ctx, b_kt, b_gain)
     return p
 
 

@@ -18,9 +18,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline
-from labrig.diagnose.features import specimen_for
-from labrig.physics import timeresp, transfer
+from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
+                                      creep_since_first_record, follow_force)
+from labrig.physics import timeresp
 
 _N = 64
 _TH = 2 * np.pi * np.arange(_N) / _N
@@ -191,16 +191,8 @@ def _creep(shape):
     def apply(th, ctx: Context):
         loss, tau, b_kt, b_gain, *sh = th
         p = baseline(ctx)
-        first: dict = {}
-        for s in ctx.sines:
-            first[s.pressure_kPa] = min(first.get(s.pressure_kPa, np.inf), s.t_start)
-        for k, s in enumerate(ctx.sines):
-            p.force_rel[k] = -loss * shape(max(s.t_start - first[s.pressure_kPa], 0.0) / tau, sh)
-            if not np.isfinite(s.force_mean) or ctx.force_nominal[k] <= 0:
-                continue
-            rel = s.force_mean / ctx.force_nominal[k]
-            sp = specimen_for(ctx.specimens, s.pressure_kPa)
-            p.Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel**b_kt))[0] * rel**b_gain
+        p.force_rel[:] = -loss * shape(creep_since_first_record(ctx) / tau, sh)
+        follow_force(p, ctx, b_kt, b_gain)
         return p
 
     return apply
