@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from labrig.fit.session_data import load_session
+from labrig.estimate.session_data import load_session
 from labrig.physics import presets, transfer
 from labrig.session_run import RunRequest, execute
 

@@ -22,7 +22,7 @@ from labrig.jsonable import jsonable
 def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     """The session's data and its seed-000 fit: what `fit` reports and `diagnose` builds on (done once)."""
     from labrig.fit.seed000 import fit_seed000
-    from labrig.fit.session_data import load_session
+    from labrig.estimate.session_data import load_session
 
     sd = load_session(path)
     if not sd.pressures and not sd.unpressured:

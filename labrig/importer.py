@@ -12,7 +12,7 @@ export`` writes them) each record starts at its own first ``t_s`` and its stored
 exactly as a run stores them. Otherwise (every CSV starting at 0, say) the records are laid back to back in
 manifest order with their times as written. Spectra have no time: they sit where the time series before
 them ended. What a manifest cannot say (a step's edge, a sine's settling cycles) the fitter reads off the
-data (``labrig.fit.session_data.step_onset``, ``sine_cycles``).
+data (``labrig.estimate.session_data.step_onset``, ``sine_cycles``).
 """
 
 from __future__ import annotations

@@ -16,7 +16,7 @@ from labrig.estimate import (
     sine_segment_gains,
     template_gains,
 )
-from labrig.fit.session_data import load_session
+from labrig.estimate.session_data import load_session
 from labrig.importer import import_manifest
 from labrig.physics import presets, transfer
 from labrig.session_run import RunRequest, execute

@@ -23,7 +23,7 @@ import pytest
 
 from labrig.fit import seed000_problem as sp000
 from labrig.fit.seed000 import fit_seed000, prior_specimens
-from labrig.fit.session_data import SessionData, load_session
+from labrig.estimate.session_data import SessionData, load_session
 from labrig.physics import transfer
 from labrig.physics.params import TABLE1, TABLE2_KT_BAR, Specimen
 from labrig.session_run import RunRequest, execute

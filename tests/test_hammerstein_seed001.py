@@ -16,7 +16,7 @@ import pytest
 from labrig.cli import main
 from labrig.fit.seed001 import prepare, summarise
 from labrig.fit.seed001_identify import Budget, compare
-from labrig.fit.session_data import load_session
+from labrig.estimate.session_data import load_session
 from labrig.physics import hammerstein as hm
 from labrig.physics import presets
 from labrig.physics.params import HammersteinParams

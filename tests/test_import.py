@@ -130,7 +130,7 @@ def test_bad_input_through_the_real_command_line(tmp_path):
 def test_a_sine_records_layout_is_read_when_the_manifest_says_it(tmp_path):
     """`settle_cycles` and `cycles` (what `labrig export` writes from the runner's metadata) set where the estimator
     demodulates; without them it guesses a third of the whole cycles as settling."""
-    from labrig.fit.session_data import load_session, sine_cycles
+    from labrig.estimate.session_data import load_session, sine_cycles
 
     shutil.copytree(EXAMPLE, tmp_path / "m")
     manifest = tmp_path / "m" / "manifest.toml"

@@ -14,7 +14,7 @@ import pytest
 
 from labrig.cli import main
 from labrig.analysis import load_and_fit, run_diagnosis
-from labrig.fit.session_data import load_session
+from labrig.estimate.session_data import load_session
 
 EFFECT, SEED = "dehydration", 1  # a drift with time: seen only if the records keep their places in time
 BENCH_CASES = [(EFFECT, SEED)]  # the original: run, fitted and diagnosed once for the suite (conftest)

@@ -23,7 +23,7 @@ from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import Refit, refit
 from labrig.diagnose.verdict import STRUCTURE_MARGIN, structured, where as locate_misses
-from labrig.fit.session_data import SessionData
+from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
 from labrig.physics.impedance import impedance
 

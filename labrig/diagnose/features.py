@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from labrig.estimate import SineEstimate, sine_estimate
-from labrig.fit.session_data import SessionData, TimeRecord, sine_cycles, step_onset
+from labrig.estimate.session_data import SessionData, TimeRecord, sine_cycles, step_onset
 from labrig.physics import timeresp, transfer
 from labrig.physics.params import Specimen
 from labrig.records import SINE_KINDS

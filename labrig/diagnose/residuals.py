@@ -19,7 +19,7 @@ from labrig.diagnose.families import form
 from labrig.diagnose.features import Features, extract
 from labrig.diagnose.nuisance import with_fitted_mechanics
 from labrig.diagnose.verdict import abscissa
-from labrig.fit.session_data import SessionData
+from labrig.estimate.session_data import SessionData
 
 BLOCK_TITLES = {
     "frf_d": "displacement FRF, sine records",

@@ -26,7 +26,7 @@ import numpy as np
 from labrig.estimate import step_metrics
 from labrig.fit import seed000_problem as sp000
 from labrig.fit.seed000_problem import LINE_NAMES, Problem, clamp_name, tag
-from labrig.fit.session_data import PressureData, SessionData, step_offset, step_onset
+from labrig.estimate.session_data import PressureData, SessionData, step_offset, step_onset
 from labrig.physics import presets, transfer
 from labrig.physics.clamp import ClampLaw
 from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen

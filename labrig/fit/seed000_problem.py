@@ -27,7 +27,7 @@ import lmfit
 import numpy as np
 from scipy.optimize import brentq
 
-from labrig.fit.session_data import PressureData
+from labrig.estimate.session_data import PressureData
 from labrig.physics import impedance as imp
 from labrig.physics import transfer
 from labrig.physics.params import Specimen

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from labrig.fit.hammerstein import HammersteinFit, Record, decimate_record, evaluate_chunk, pack, _spec
-from labrig.fit.session_data import SessionData, TimeRecord
+from labrig.estimate.session_data import SessionData, TimeRecord
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
 from labrig.records import RecordKind

@@ -16,7 +16,7 @@ import numpy as np
 
 from labrig.fit.executors import is_dask_client
 from labrig.fit.hammerstein import HammersteinFit, fit_nsga2, fit_sequential, from_unit, knee_point
-from labrig.fit.session_data import SessionData
+from labrig.estimate.session_data import SessionData
 from labrig.fit.seed001 import MAX_RATE_HZ, MAX_S, Seed001Data, clean, prepare, summarise
 from labrig.physics import hammerstein as hm
 from labrig.physics.params import HammersteinParams
