@@ -221,8 +221,8 @@ def force_following_frf(ctx: Context, b_kt: float) -> tuple[np.ndarray, np.ndarr
     """Per sine: the force the load cell read over the clamp target, rel = F/F0 (nan where unknown), and the
     baseline FRF with K_t bar following it, K_t bar rel^b_kt. Cached per exponent in ``ctx.cache``: a
     finite-difference Jacobian moves one parameter at a time, so most of a fit's evaluations share b_kt."""
-    key = ("force_following_frf", float(b_kt))
-    hit = ctx.cache.get(key)
+    seen = ctx.cache.setdefault("force_following_frf", {})  # exponent -> (rel, Hd), oldest first
+    hit = seen.get(float(b_kt))
     if hit is None:
         rel = np.full(len(ctx.sines), np.nan)
         Hd = np.full(len(ctx.sines), np.nan, dtype=complex)
@@ -232,9 +232,9 @@ def force_following_frf(ctx: Context, b_kt: float) -> tuple[np.ndarray, np.ndarr
             rel[k] = s.force_mean / ctx.force_nominal[k]
             sp = specimen_for(ctx.specimens, s.pressure_kPa)
             Hd[k] = transfer.frf(np.array([s.f]), sp.with_(Kt_bar=sp.Kt_bar * rel[k] ** b_kt))[0]
-        if sum(1 for c in ctx.cache if c[0] == "force_following_frf") >= 64:  # a fit's old exponents: drop the oldest
-            del ctx.cache[next(c for c in ctx.cache if c[0] == "force_following_frf")]
-        hit = ctx.cache[key] = (rel, Hd)
+        if len(seen) >= 64:  # a fit's old exponents: drop the oldest
+            del seen[next(iter(seen))]
+        hit = seen[float(b_kt)] = (rel, Hd)
     return hit
 
 

@@ -236,25 +236,24 @@ class _Layout:
         raise Hostile(f"{self.path}: {one_line(where, 100)}: {problem}")
 
     # -- primitives
-    def group(self, where: str, required: bool = True) -> h5py.Group | None:
+    def _node(self, where: str, cls: type, what: str, required: bool) -> Any:
         obj = self.f.get(where)
         if obj is None:
             if required:
                 self.fail(where, "missing (not a complete labrig session)")
             return None
-        if not isinstance(obj, h5py.Group):
-            self.fail(where, "is not a group")
+        if not isinstance(obj, cls):
+            self.fail(where, f"is not a {what}")
         return obj
+
+    def group(self, where: str, required: bool = True) -> h5py.Group | None:
+        return self._node(where, h5py.Group, "group", required)
 
     def dataset(self, where: str, kinds: str, shape: str, required: bool = True) -> h5py.Dataset | None:
         """``shape``: "scalar", "1d" or "any"; ``kinds``: numpy kinds allowed ("f", "iu", "OS" text...)."""
-        obj = self.f.get(where)
+        obj = self._node(where, h5py.Dataset, "dataset", required)
         if obj is None:
-            if required:
-                self.fail(where, "missing (not a complete labrig session)")
             return None
-        if not isinstance(obj, h5py.Dataset):
-            self.fail(where, "is not a dataset")
         if obj.dtype.kind not in kinds:
             self.fail(where, f"has type {one_line(str(obj.dtype), 30)}, expected {_kind_words(kinds)}")
         if shape == "scalar" and obj.shape != ():
