@@ -309,7 +309,8 @@ def multisine_bla(
 
     Over R realisations: G = mean_r G_r, noise var = mean_r var G_r / R, total var = var_r G_r / R (noise
     plus the stochastic nonlinear distortion, which changes with the random phases; the ratio total/noise is
-    smoothed over +-smooth_lines excited lines since one line has only R - 1 degrees of freedom). With one
+    smoothed over +-smooth_lines excited lines since one line has only R - 1 degrees of freedom, and kept at or
+    above the noise variance, since the distortion only adds). With one
     realisation the total is the noise variance: the nonlinear part is then unknown, but the unexcited lines
     still show it. With one period the noise comes from the unexcited bins around each line.
     """
@@ -330,7 +331,9 @@ def multisine_bla(
     for key in ("d", "i"):
         g = np.array([r[key]["G"] for r in per])
         nv = np.mean([r[key]["var"] for r in per], axis=0) / R
-        tv = nv * _moving_mean((np.var(g, axis=0, ddof=1) / R) / nv, smooth_lines) if R > 1 else nv.copy()
+        # total >= noise: the distortion adds variance, so a between-realisation scatter that reads below the noise
+        # (R - 1 degrees of freedom) is sampling error, and the noise from the periods is the better estimate
+        tv = nv * np.maximum(_moving_mean((np.var(g, axis=0, ddof=1) / R) / nv, smooth_lines), 1.0) if R > 1 else nv.copy()
         level, noise = (np.mean([r[key][k] for r in per], axis=0) for k in ("level", "noise"))
         out[key] = {"G": g.mean(0), "noise": nv, "total": tv, "Gp": np.array([r[key]["Gp"] for r in per]),
                     "var_p": np.array([r[key]["var"] for r in per]) * P,
