@@ -144,3 +144,21 @@ def test_a_sine_records_layout_is_read_when_the_manifest_says_it(tmp_path):
         got.append(sine_cycles(rec))
     assert got[0][0] >= 2 and got[0][1] is None  # 4 s at 2 Hz: a third of its 7-8 whole cycles guessed as settling
     assert got[1] == (0.0, 6.0)
+
+
+@pytest.mark.parametrize("preset", ["paper", "seed001"])
+def test_an_imported_strip_gets_the_prior_of_a_strip_of_its_own_geometry(preset):
+    """An import carries the specimen's geometry, not a preset name: the fit's prior must then be what the preset
+    of that geometry would give (the line's per-length values scale with width), else every strip not 4 mm wide
+    is misfit from the start (R_s is held at its prior)."""
+    import dataclasses
+
+    from labrig.fit.seed000 import base_specimen
+    from labrig.physics import presets
+
+    want = presets.get(preset).base
+    g = want.geometry
+    sample = {"length_m": g.length, "width_m": g.width, "thickness_m": g.thickness, "clamp_area_m2": g.clamp_area,
+              "medium": "air" if want.fluid.name == "air" else "water"}
+    got = base_specimen(sample)
+    assert dataclasses.replace(got, clamp=want.clamp, Kt_bar=want.Kt_bar, pressure=want.pressure) == want

@@ -37,7 +37,9 @@ MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
 
 
 def base_specimen(sample: dict[str, Any]) -> Specimen:
-    """The prior specimen: the session's preset, or the paper's material in the imported geometry.
+    """The prior specimen: the session's preset, or the paper's material in the imported geometry (its line's
+    per-length values scaled with the width, as the seed-001 preset scales them: R_s is held, not fitted, so an
+    unscaled one would misfit every strip not 4 mm wide).
 
     It keeps the preset's number of modes (10), the model the simulated bench runs: with 4 modes the
     FRF's shape is 0.5 % low below 1 Hz, which the joint fit turned into +0.2 ohm of R_cont and +1.5 % of alpha."""
@@ -50,7 +52,7 @@ def base_specimen(sample: dict[str, Any]) -> Specimen:
     geom = Geometry(float(sample.get("length_m", sp.geometry.length)), w, float(sample.get("thickness_m", sp.geometry.thickness)), area / w, w)
     fluid: Fluid = AIR_25C if str(sample.get("medium", "water")) == "air" else WATER_25C
     mech = sp.mechanics if fluid is WATER_25C else dataclasses.replace(sp.mechanics, mu_v=None, density=2000.0)
-    return sp.with_(geometry=geom, fluid=fluid, mechanics=mech)
+    return sp.with_(geometry=geom, fluid=fluid, mechanics=mech, line=presets.line_for_width(w))
 
 
 def prior_specimens(sample: dict[str, Any], pressures: list[float]) -> dict[float, Specimen]:

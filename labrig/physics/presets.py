@@ -40,6 +40,11 @@ class Preset:
         return replace(sp, **changes) if changes else sp
 
 
+def line_for_width(width_m: float) -> LineElectrical:
+    """The paper's free-strip line (Table 1, least squeezed row) for a strip of the same material ``width_m`` wide."""
+    return _line_from_table1(0, width_scale=width_m / PAPER_WIDTH_M)
+
+
 def _line_from_table1(row_index: int, width_scale: float = 1.0) -> LineElectrical:
     """The free strip's line: seed 000 says the distributed values equal Table 1's; we take the least
     squeezed row (612 kPa). Per-length values scale with width (admittances up, resistances down)."""
@@ -49,8 +54,11 @@ def _line_from_table1(row_index: int, width_scale: float = 1.0) -> LineElectrica
     )
 
 
+PAPER_WIDTH_M = 0.004
+
+
 def _paper() -> Preset:
-    geom = Geometry(length=0.030, width=0.004, thickness=0.22e-3, clamp_length=0.004, clamp_width=0.004)
+    geom = Geometry(length=0.030, width=PAPER_WIDTH_M, thickness=0.22e-3, clamp_length=0.004, clamp_width=0.004)
     # density chosen so mu_v(omega_1) = rho A + m_a = 0.02 kg/m (Table 3) at f1 = 3.78 Hz (3062 kPa)
     m_a = float(hydro.added_mass(2 * 3.141592653589793 * 3.78, geom.width, WATER_25C))
     rho = (TABLE3["mu_v"] - m_a) / geom.cross_section
@@ -77,7 +85,7 @@ def _seed001() -> Preset:
         paper.base,
         geometry=geom,
         fluid=AIR_25C,
-        line=_line_from_table1(0, width_scale=geom.width / 0.004),
+        line=line_for_width(geom.width),
         clamp=law.clamp_at(SEED001_PRESSURE_KPA * 1e3),
         mechanics=replace(paper.base.mechanics, density=2000.0, mu_v=None),  # in air: rho A + tiny m_a(omega)
         Kt_bar=law.kt_bar_at(SEED001_PRESSURE_KPA * 1e3),
