@@ -70,6 +70,26 @@ def test_a_branch_form_gives_the_harmonics_of_its_polynomial():
     assert tafel[-1] == 1e-3 and np.all(np.abs(tafel[:5]) < 1e-6)  # grows with v, nothing below 0 V
 
 
+def test_the_drying_and_creep_families_contain_their_simpler_forms():
+    """The power-of-time drying is the linear one at n = 1 and Fick's sqrt at n = 1/2; the two-arm creep is the
+    catalogue's single exponential at w = 1, and two exponentials at ratio k otherwise."""
+    import numpy as np
+
+    from labrig.diagnose import families
+
+    u = np.linspace(0, 1, 21)
+    np.testing.assert_allclose(families._power(u, (1.0,)), families._linear(u, ()), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(families._power(u, (0.5,)), np.sqrt(u), rtol=1e-12)
+    x = np.linspace(0, 30, 31)
+    np.testing.assert_allclose(families._two_arm_creep(x, (10.0, 1.0)), 1 - np.exp(-x), rtol=1e-12)
+    np.testing.assert_allclose(families._two_arm_creep(x, (10.0, 0.3)), 0.3 * (1 - np.exp(-x)) + 0.7 * (1 - np.exp(-x / 10)), rtol=1e-12)
+    names = {e.form for e in families.FAMILIES["dehydration"]} | {e.form for e in families.FAMILIES["clamp_relaxation"]}
+    assert {"power", "two_arm"} <= names
+    for ext in families.FAMILIES["dehydration"] + families.FAMILIES["clamp_relaxation"]:
+        assert len(ext.params) == len(ext.x0) == len(ext.lo) == len(ext.hi)
+        assert all(lo <= x <= hi for x, lo, hi in zip(ext.x0, ext.lo, ext.hi))
+
+
 def test_where_names_the_band_the_order_and_the_time():
     """The verdict's localisation on a synthetic context: a frf_d residual confined to 2-5 Hz, a 3rd-harmonic one,
     and a step residual late in the record."""

@@ -9,9 +9,11 @@ names the effect by its signature; the form found is reported (``extended.form``
 |---|---|
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
-| hysteresis | play operator on the drive; play operator in the displacement path (the sensor side) |
+| hysteresis | play operator on the drive; play operator in the displacement path (the sensor side); Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter) |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
+| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian) |
+| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell) |
 """
 
 from __future__ import annotations
@@ -172,6 +174,13 @@ def _saturating(u, sh):
     return -np.expm1(-u / tau) / -np.expm1(-1.0 / tau)
 
 
+def _power(u, sh):
+    """Diffusion-limited loss: water leaving through a skin that thickens as it dries goes as a power of time,
+    u^n (Fick: n = 1/2 while the strip's core is still wet; n = 1: zero order, n > 1: a loss that speeds up)."""
+    (n,) = sh
+    return u**n
+
+
 def _sigmoid(u, sh):
     """A loss that sets in late and runs its course (the surface film first, then the bulk past a drying front):
     a logistic in session time, centre m, width w (session spans), 0 at the start. w >= 0.1: a narrower front
@@ -207,6 +216,13 @@ def _power_creep(x, sh):
     """Nutting's law (t/tau)^n, 0 < n < 1: a power-law spectrum of relaxation times (scale-free creep)."""
     (n,) = sh
     return x**n
+
+
+def _two_arm_creep(x, sh):
+    """A generalised Maxwell clamp with two arms: a fast share w relaxing with tau and the rest ``ratio`` times
+    slower (a polymer's two relaxation processes: chain slip, then the bulk's viscous flow)."""
+    ratio, w = sh
+    return w * -np.expm1(-x) + (1.0 - w) * -np.expm1(-x / ratio)
 
 
 # ------------------------------------------------------------------------------------------ smooth memory, sensor side
@@ -293,6 +309,8 @@ FAMILIES["dehydration"] += [
           "gain and conductance falling linearly with session time from levels of their own (zero-order evaporation)"),
     _form("dehydration", "saturating", (*_DRY, "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.3), (0.5, -0.5, 0.5, -0.5, 0.03), (2.0, 0.9, 2.0, 0.9, 5.0),
           _drying(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
+    _form("dehydration", "power", (*_DRY, "exponent"), (1.0, 0.2, 1.0, 0.1, 0.5), (0.5, -0.5, 0.5, -0.5, 0.2), (2.0, 0.9, 2.0, 0.9, 3.0),
+          _drying(_power), "gain and conductance falling as a power of session time, t^n (n = 1/2: diffusion through a drying skin)"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
 FAMILIES["clamp_relaxation"] += [
@@ -300,6 +318,9 @@ FAMILIES["clamp_relaxation"] += [
           _creep(_log_creep), "clamp force creeping with log time, F = F0 (1 - r ln(1 + t/tau)); K_t bar and gain follow it"),
     _form("clamp_relaxation", "power_creep", (*_CREEP, "exponent"), (0.03, 600.0, 1.0, 0.0, 0.4), (-0.2, 20.0, -10.0, -10.0, 0.05),
           (0.6, 1e4, 10.0, 10.0, 1.0), _creep(_power_creep), "clamp force creeping as a power of time (Nutting), F = F0 (1 - r (t/tau)^n)"),
+    _form("clamp_relaxation", "two_arm", (*_CREEP, "slow_ratio", "fast_share"), (0.05, 60.0, 1.0, 0.0, 20.0, 0.5),
+          (-0.2, 5.0, -10.0, -10.0, 3.0, 0.0), (0.6, 1e4, 10.0, 10.0, 300.0, 1.0), _creep(_two_arm_creep),
+          "clamp force relaxing in two arms, F = F0 (1 - r (w (1 - e^-t/tau) + (1 - w)(1 - e^-t/(k tau)))); K_t bar and gain follow it"),
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
