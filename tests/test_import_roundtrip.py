@@ -57,7 +57,9 @@ def test_imported_copy_is_diagnosed_like_the_original(sessions):
     assert b["gain"]["delta_bic"] == pytest.approx(a["gain"]["delta_bic"], rel=0.1)
     assert a["gain"]["heldout_nrmse_ratio"] < 0.5 and b["gain"]["heldout_nrmse_ratio"] < 0.5
     assert abs(b["gain"]["heldout_nrmse_ratio"] - a["gain"]["heldout_nrmse_ratio"]) < 0.05
-    assert cand_b["params"]["gain_decay_per_s"] == pytest.approx(cand_a["params"]["gain_decay_per_s"], rel=0.1)  # the same drying rate
+    # the same drying: the same form of the family, with the same parameters (whichever form the evidence picks)
+    assert cand_b["form"] == cand_a["form"]
+    assert cand_b["params"] == pytest.approx(cand_a["params"], rel=0.1, abs=1e-6)
 
 
 def test_imported_records_sit_where_the_run_put_them(sessions):
