@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import math
-
 import numpy as np
 
 
@@ -23,6 +21,11 @@ class SineEstimate:
     displacement: np.ndarray
     disp_noise: float  # std of the displacement amplitude estimate at f (from cycle-to-cycle scatter)
     cur_noise: float
+    # the cycle-to-cycle scatter reads larger than the whole-record estimate's own noise for white noise (one-cycle
+    # fits with their trend, over sqrt(cycles), against the whole record's design): that noise is noise /
+    # noise_inflation. The noise above stays the fit's weights (its thresholds were set in those units)
+    noise_inflation: float = 1.0
+    noise_dof: int = 0  # degrees of freedom of the scatter (both parts of nc cycles: 2 (nc - 1)); 0: none
 
     @property
     def H_disp(self) -> complex:
@@ -93,7 +96,19 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     nc = len(per_cycle_d)
     dn = float(np.std(per_cycle_d) / np.sqrt(nc)) if nc > 1 else float("nan")
     cn = float(np.std(per_cycle_i) / np.sqrt(nc)) if nc > 1 else float("nan")
-    return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn)
+    inflation = 1.0
+    if nc > 1:  # white noise: E[std^2] (ddof 0) = (nc - 1)/nc of a one-cycle fit's variance; over nc, against the whole fit's
+        per_cycle = np.mean([_fundamental_variance(tt[c * n1:(c + 1) * n1], f, 1) for c in range(nc)])
+        inflation = float(np.sqrt((nc - 1) / nc * per_cycle / nc / _fundamental_variance(tt, f, harmonics)))
+    return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn,
+                        inflation, 2 * (nc - 1) if nc > 1 else 0)
+
+
+def _fundamental_variance(t: np.ndarray, f: float, harmonics: int, trend: int = 2) -> float:
+    """Variance of ``demodulate``'s complex fundamental for white noise of unit variance (both parts together)."""
+    x = _design(t, f, harmonics, trend)
+    cov = np.linalg.pinv(x.T @ x)
+    return float(cov[trend + 1, trend + 1] + cov[trend + 2, trend + 2])
 
 
 # ------------------------------------------------------------------------------------------- multisine BLA
