@@ -38,6 +38,28 @@ def _chrono(s: Session) -> list[Rec]:
     return sorted(s.series(), key=lambda r: float(r.cols["t_s"][0]))
 
 
+def _through(s: Session, H: Callable[[Rec], Callable[[np.ndarray], np.ndarray]], memory_s: float) -> dict[int, np.ndarray]:
+    """Each record's displacement through the linear operator H(r)(s), with the session's history: the record is
+    preceded by memory_s of what was measured before it (the records before it in time, linear across the rests
+    between them, zero before the session), so a record that starts on a still-bent strip carries no false
+    transient; and followed by its own last value held (a ratio of the beam's transfer functions is not strictly
+    causal: the padding's drop to zero would leak back into the record's last samples). Returns the new columns."""
+    recs = _chrono(s)
+    T = np.concatenate([r.cols["t_s"] for r in recs])
+    D = np.concatenate([r.cols["disp_m"] for r in recs])
+    out = {}
+    for r in recs:
+        d, n, k = r.cols["disp_m"], r.cols["disp_m"].size, int(memory_s * r.fs)
+        past = np.interp(r.cols["t_s"][0] - np.arange(k, 0, -1) / r.fs, T, D, left=0.0)
+        out[id(r)] = lti(np.r_[past, d, np.full(n, d[-1])], r.fs, H(r))[k : k + n]
+    return out
+
+
+def _map_through(s: Session, H: Callable[[Rec], Callable[[np.ndarray], np.ndarray]], memory_s: float) -> None:
+    new = _through(s, H, memory_s)
+    map_disp(s, lambda r, d: new[id(r)])
+
+
 def _spec(s: Session, r: Rec):
     from labrig.physics import presets
 
@@ -53,7 +75,7 @@ def br_havriliak_negami(s: Session) -> None:
     (Cole-Cole is b = 1, Cole-Davidson a = 1). K2 0.7-1.1 (its broad fast tail gives back more than a
     single lag of the same K2), tau 3-15 s (log)."""
     k2, tau, a, b = s.rng.uniform(0.7, 1.1), lu(s.rng, 3.0, 15.0), s.rng.uniform(0.6, 0.9), s.rng.uniform(0.4, 0.7)
-    map_disp(s, lambda r, d: lti(d, r.fs, lambda z: 1 - k2 / (1 + (tau * z + 0j) ** a) ** b))
+    _map_through(s, lambda r: lambda z: 1 - k2 / (1 + (tau * z + 0j) ** a) ** b, 120.0)
 
 
 def br_two_stage(s: Session) -> None:
@@ -62,7 +84,7 @@ def br_two_stage(s: Session) -> None:
     1/(tau s + 1)^2 (a gamma-shaped t exp(-t/tau) response): the strip holds its peak longer, then relaxes and, with
     K2 1.0-1.4, overshoots past zero. tau 2-8 s (log)."""
     k2, tau = s.rng.uniform(1.0, 1.4), lu(s.rng, 2.0, 8.0)
-    map_disp(s, lambda r, d: lti(d, r.fs, lambda z: 1 - k2 / (tau * z + 1) ** 2))
+    _map_through(s, lambda r: lambda z: 1 - k2 / (tau * z + 1) ** 2, min(12 * tau, 120.0))
 
 
 # ------------------------------------------------------------------------------------------------ faradaic current
@@ -195,7 +217,7 @@ def td_rc_skew(s: Session) -> None:
     """The laser's analogue output through a first-order RC anti-aliasing filter (corner 6-25 Hz, log: a group delay
     of 6-27 ms at low frequency), read by a multiplexed DAQ half a sample period after the voltage channel."""
     tau = 1 / (2 * np.pi * lu(s.rng, 6.0, 25.0))
-    map_disp(s, lambda r, d: lti(d, r.fs, lambda z: np.exp(-z * 0.5 / r.fs) / (1 + z * tau)))
+    _map_through(s, lambda r: lambda z: np.exp(-z * 0.5 / r.fs) / (1 + z * tau), 1.0)
 
 
 def td_sample_hold(s: Session) -> None:
@@ -224,13 +246,13 @@ def so_tilted_laser(s: Session) -> None:
 
     f, th, side = s.rng.uniform(0.75, 0.95), math.radians(s.rng.uniform(8, 20)), (1 if s.rng.random() < 0.5 else -1)
 
-    def reading(r: Rec, d: np.ndarray) -> np.ndarray:
+    def ratio(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
         sp = _spec(s, r)
-        x0 = f * sp.geometry.length
-        w = lti(d, r.fs, lambda z: transfer.displacement_tf(z, sp.with_(sensor_x=x0)) / transfer.displacement_tf(z, sp))
-        return (w + side * 2 * math.tan(th) * w**2 / x0) / math.cos(th)
+        return lambda z: transfer.displacement_tf(z, sp.with_(sensor_x=f * sp.geometry.length)) / transfer.displacement_tf(z, sp)
 
-    map_disp(s, reading)
+    new = _through(s, ratio, 2.0)
+    x0 = f * float(s.specimen["length_m"])
+    map_disp(s, lambda r, d: (new[id(r)] + side * 2 * math.tan(th) * new[id(r)] ** 2 / x0) / math.cos(th))
 
 
 def so_line_spot(s: Session) -> None:
@@ -241,13 +263,12 @@ def so_line_spot(s: Session) -> None:
 
     frac = s.rng.uniform(0.2, 0.45)
 
-    def reading(r: Rec, d: np.ndarray) -> np.ndarray:
+    def mean_ratio(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
         sp = _spec(s, r)
-        L = sp.geometry.length
-        xs = np.linspace(L * (1 - frac), L, 6)
-        return lti(d, r.fs, lambda z: np.mean([transfer.displacement_tf(z, sp.with_(sensor_x=x)) for x in xs], axis=0) / transfer.displacement_tf(z, sp))
+        xs = np.linspace(sp.geometry.length * (1 - frac), sp.geometry.length, 6)
+        return lambda z: np.mean([transfer.displacement_tf(z, sp.with_(sensor_x=x)) for x in xs], axis=0) / transfer.displacement_tf(z, sp)
 
-    map_disp(s, reading)
+    _map_through(s, mean_ratio, 2.0)
 
 
 # ------------------------------------------------------------------------------------------------ clamp relaxation
