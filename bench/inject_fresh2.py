@@ -25,7 +25,7 @@ from typing import Callable
 import numpy as np
 
 import inject
-from inject import Case, Rec, Session, _clamp, _dry, _strain, lti, lu, map_disp, play
+from inject import Case, Rec, Session, _clamp, _dry, _strain, lti, lu, map_disp, play, ref_disp
 
 inject.BASES.update({
     "paper_41": ("paper-sweep", "paper", 41),
@@ -334,9 +334,15 @@ def dh_falling_rate(s: Session) -> None:
 def sr_crack_hysteresis(s: Session) -> None:
     """Cracks in the tensioned electrode open with its strain but close only once the strain has come back by the
     cracks' friction (a play of radius 0.1-0.3 of the displacement scale, tension side only): the resistance
-    follows a hysteretic crack opening, so the displacement and current gains fall more on the way down."""
+    follows a hysteretic crack opening, so the displacement and current gains fall more on the way down. The cracks'
+    state carries through the session in time order."""
     rr, side = s.rng.uniform(0.1, 0.3), (1 if s.rng.random() < 0.5 else -1)
-    _strain(s, lambda e: np.clip(play(side * e, rr), 0, None))
+    recs, ref = _chrono(s), ref_disp(s)
+    e = np.concatenate([side * r.cols["disp_m"] / ref for r in recs])
+    opened = np.split(np.clip(play(e, rr), 0, None), np.cumsum([r.cols["disp_m"].size for r in recs])[:-1])
+    by_rec = {id(r): x for r, x in zip(recs, opened)}
+    it = iter([by_rec[id(r)] for r in s.series()])  # inject._strain asks for each record's shape in s.series() order
+    _strain(s, lambda _e: next(it))
 
 
 def sr_saturating(s: Session) -> None:

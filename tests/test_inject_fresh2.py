@@ -113,3 +113,18 @@ def test_case_list():
     assert {t for t in f2.FRESH2_FORMS if t not in ("unexplained",)} == {
         "back_relaxation", "faradaic_current", "hysteresis", "time_delay", "sensor_offset", "clamp_relaxation",
         "dehydration", "strain_resistance", "large_deflection", "mains_pickup"}
+
+
+def test_through_keeps_records_aligned():
+    """The session-history filter: an identity returns each record as it was (the history before it and the held
+    tail after it cut exactly), a pure delay of one sample shifts it by one and starts from the history's last value."""
+    s = copy.deepcopy(BASE)
+    s.recs[2].cols["disp_m"] = s.recs[2].cols["disp_m"] + 1e-3  # a record that starts on a bent strip
+    same = f2._through(s, lambda r: lambda z: np.ones_like(z), 5.0)
+    for r in s.series():
+        np.testing.assert_allclose(same[id(r)], r.cols["disp_m"], atol=1e-12)
+    late = f2._through(s, lambda r: lambda z: np.exp(-z / r.fs), 5.0)
+    for r in s.series():
+        np.testing.assert_allclose(late[id(r)][1:], r.cols["disp_m"][:-1], atol=1e-9)
+    r = s.recs[2]
+    assert abs(late[id(r)][0] - r.cols["disp_m"][0]) < 0.01 * 1e-3  # no jump from zero at the record's start
