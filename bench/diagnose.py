@@ -8,8 +8,11 @@
 * Fresh held-out set (``--set fresh``, bench/inject.py ``fresh_cases``): a further form per effect and a further
   outside structure, written before the second pass changed the diagnosis, on new seeds (31-33) and strips
   (seed-001, 25 mm). Unseen: looked at only once the second pass's code was final.
+* Fresh2 held-out set (``--set fresh2``, bench/inject_fresh2.py ``fresh2_cases``): two further forms per effect and
+  three further outside structures, written by someone who had not seen the diagnosis' model families, on seeds
+  41-43 (paper, seed-001, 40 mm strips) and two new data shapes (decimated by 3, each CSV on its own clock).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -85,11 +88,17 @@ def tuning(a) -> list:
     return results
 
 
-def validation(a, fresh: bool = False) -> list:
+def validation(a, fresh: bool = False, fresh2: bool = False) -> list:
     sys.path.insert(0, str(REPO / "bench"))
     import inject
 
-    todo = inject.fresh_cases() if fresh else inject.cases(extra=a.extra, full=a.full)
+    runner = inject  # whose run_all: its workers must import the module that registers the set's forms
+    if fresh2:
+        import inject_fresh2  # registers its forms, bases and variants in inject
+
+        runner, todo = inject_fresh2, inject_fresh2.fresh2_cases()
+    else:
+        todo = inject.fresh_cases() if fresh else inject.cases(extra=a.extra, full=a.full)
     t0 = time.perf_counter()
     folder = Path(a.cache or REPO / ".cache") / "validation"
     if a.stored:
@@ -103,8 +112,9 @@ def validation(a, fresh: bool = False) -> list:
                 results.append((CaseResult(c.truth, c.seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
                                            float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)), c))
     else:
-        results = inject.run_all(folder, todo, a.jobs, a.reuse)
-    label = "fresh held-out set (unseen)" if fresh else "validation set (seen in the first pass)"
+        results = runner.run_all(folder, todo, a.jobs, a.reuse)
+    label = ("fresh2 held-out set (unseen)" if fresh2 else "fresh held-out set (unseen)" if fresh
+             else "validation set (seen in the first pass)")
     print(f"== {label}: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     inject.report(results)
     return [r for r, _ in results]
@@ -112,7 +122,7 @@ def validation(a, fresh: bool = False) -> list:
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--set", choices=("both", "tuning", "validation", "fresh", "all"), default="both")
+    ap.add_argument("--set", choices=("both", "tuning", "validation", "fresh", "fresh2", "all"), default="both")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--none-seeds", type=int, default=10)
     ap.add_argument("--first-seed", type=int, default=1, help="seeds first-seed, first-seed + 1, ...")
@@ -132,6 +142,8 @@ def main() -> None:
         results += validation(a)
     if a.set in ("fresh", "all") and not a.make_only:
         results += validation(a, fresh=True)
+    if a.set in ("fresh2", "all") and not a.make_only:
+        results += validation(a, fresh2=True)
     times = [r.diagnose_s for r in results]
     if times and not a.stored:
         print(f"labrig diagnose wall time (fit + diagnosis), {a.jobs} at a time: median {statistics.median(times):.1f} s, "

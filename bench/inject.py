@@ -593,8 +593,11 @@ def fresh_cases() -> list[Case]:
     return sorted(out, key=lambda c: c.seed)
 
 
+REGISTRY: dict[str, dict[str, Callable[[Session], None]]] = {}  # forms of further sets (bench/inject_fresh2.py adds its own)
+
+
 def form_of(case: Case) -> Callable[[Session], None]:
-    return {**FORMS[case.truth], **EXTRA_FORMS.get(case.truth, {}), **FRESH_FORMS.get(case.truth, {})}[case.form]
+    return {**FORMS[case.truth], **EXTRA_FORMS.get(case.truth, {}), **FRESH_FORMS.get(case.truth, {}), **REGISTRY.get(case.truth, {})}[case.form]
 
 
 # ------------------------------------------------------------------------------------ protocol and data shape
