@@ -6,6 +6,7 @@ units). Equations and references: docs/estimation.md.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
