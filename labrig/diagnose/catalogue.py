@@ -295,7 +295,9 @@ def _strain_basis(ctx: Context) -> dict:
     of the laser), dR_A/R = G_A max(e, 0), dR_B/R = G_B max(-e, 0); to first order the response becomes
     y = H v + eps(t) (dH/d ln R_s) v with eps = (dR_A + dR_B)/(2R). Linear in (G_A, G_B): the rectified strain
     gives the fundamental an amplitude-dependent change, odd harmonics (G_A + G_B) and even ones (G_A - G_B).
-    Sines: harmonics 1-3 over one period of the baseline's steady state; steps: the product at the record's rate,
+    Sines: harmonics 1-3 over one period of the baseline's steady state about the record's mean bend (a sine on a
+    strip still bent by an earlier record may never cross zero, and then rectifies little: on the tuning bench
+    0.1 Hz sines rode on 0.07-1.5 mm as the records' spacing allowed); steps: the product at the record's rate,
     then block-averaged as the step is compared."""
     if "strain" in ctx.cache:
         return ctx.cache["strain"]
@@ -310,7 +312,7 @@ def _strain_basis(ctx: Context) -> dict:
         sens = (_sensitivity(transfer.displacement_tf, sp)(w), _sensitivity(transfer.admittance_tf, sp)(w))
         for j, k in enumerate(idx):
             a = _drive(ctx.sines[k])
-            parts = _gauge_strain((ctx.Hd[k] * a * ph).real, sp)
+            parts = _gauge_strain(ctx.sines[k].bend_m + (ctx.Hd[k] * a * ph).real, sp)  # on the bend it rides on
             for c in range(2):
                 sv = (sens[c][j] * a * ph).real
                 for el, part in enumerate(parts):

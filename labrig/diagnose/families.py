@@ -124,7 +124,7 @@ def _strain_modulation(th, ctx: Context):
     bend = lambda d: 2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length  # noqa: E731
     for k, s in enumerate(ctx.sines):
         drv = _drive(s)
-        e = bend((p.Hd[k] * drv * np.exp(1j * _TH)).real)
+        e = bend(s.bend_m + (p.Hd[k] * drv * np.exp(1j * _TH)).real)
         for H, h, gain in ((p.Hd, p.hd, kd), (p.Hi, p.hi, ki)):
             x1 = H[k] * drv
             c = np.fft.fft((x1 * np.exp(1j * _TH)).real * (1 - gain * e))[1:4] * 2 / _N

@@ -36,6 +36,8 @@ class SineFeature:
     force_slope: float = 0.0  # N/s during the record
     force_mean: float = float("nan")
     force_slope_sigma: float = float("nan")  # N/s: from the readings' scatter and the indicator's resolution
+    bend_m: float = 0.0  # the mean bend the sine rides on, from the laser's rest reading at its pressure
+
 
     @property
     def Hd(self) -> complex:
@@ -158,6 +160,20 @@ def _decimate(r: TimeRecord, rate: float) -> tuple[int, tuple[np.ndarray, ...]]:
     return q, tuple(a[:n].reshape(-1, q).mean(axis=1) for a in (r.t, r.v, r.d, r.i))
 
 
+def _rest_readings(records) -> dict[float | None, float]:
+    """The laser's reading of the strip at rest per pressure: the median before the first step's onset (the zero
+    a sine's bend is measured from; a laser zeroed elsewhere would otherwise read as a bend)."""
+    out: dict[float | None, float] = {}
+    for r in records:
+        p = r.meta.get("pressure_kPa")
+        p = float(p) if p is not None else None
+        if r.kind == "step" and p not in out:
+            pre = r.t < step_onset(r)
+            if pre.sum() > 8:
+                out[p] = float(np.median(r.d[pre]))
+    return out
+
+
 def extract(sd: SessionData) -> Features:
     feats = Features()
     records = sd.all_records()
@@ -170,6 +186,7 @@ def extract(sd: SessionData) -> Features:
     ends = [r.t_start + float(r.t[-1] - r.t[0]) for r in records if np.isfinite(r.t_start) and r.t.size]
     feats.t1 = max(ends) if ends else feats.t0 + 1.0
     first_step: set[float | None] = set()
+    rest = _rest_readings(records)
     for r in records:
         p = r.meta.get("pressure_kPa")
         p = float(p) if p is not None else None
@@ -178,7 +195,7 @@ def extract(sd: SessionData) -> Features:
             f = float(r.meta["frequency_Hz"])
             est = sine_estimate(r.t, r.v, r.i, r.d, f, *sine_cycles(r))
             amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
-            feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma))
+            feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma, est.disp_mean - rest.get(p, 0.0)))
         elif r.kind == "step" and p not in first_step:
             first_step.add(p)
             q, (t, v, d, i) = _decimate(r, STEP_RATE_HZ)

@@ -27,6 +27,7 @@ class SineEstimate:
     # noise_inflation. The noise above stays the fit's weights (its thresholds were set in those units)
     noise_inflation: float = 1.0
     noise_dof: int = 0  # degrees of freedom of the scatter (both parts of nc cycles: 2 (nc - 1)); 0: none
+    disp_mean: float = 0.0  # mean displacement over the demodulated whole cycles: the bend the sine rides on
 
     @property
     def H_disp(self) -> complex:
@@ -102,7 +103,7 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
         per_cycle = np.mean([_fundamental_variance(tt[c * n1:(c + 1) * n1], f, 1) for c in range(nc)])
         inflation = float(np.sqrt((nc - 1) / nc * per_cycle / nc / _fundamental_variance(tt, f, harmonics)))
     return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn,
-                        inflation, 2 * (nc - 1) if nc > 1 else 0)
+                        inflation, 2 * (nc - 1) if nc > 1 else 0, float(np.mean(dd)) if dd.size else 0.0)
 
 
 def _fundamental_variance(t: np.ndarray, f: float, harmonics: int, trend: int = 2) -> float:
