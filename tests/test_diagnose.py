@@ -114,3 +114,17 @@ def test_where_names_the_band_the_order_and_the_time():
     assert out["harm_i"]["harmonic"] == 3
     assert out["step_d"]["time_s"][0] > 1.5 and "612 kPa" in out["step_d"]["detail"]
     assert all(w["level"] > 0 and w["over_accuracy"] > 1 for w in out.values())
+
+
+def test_a_cause_of_the_current_needs_the_current_missed():
+    """The signature rule (issue 12 item 3): strain_resistance or faradaic_current is named only where the base
+    misses a current block; the same strong candidate on a session whose current is within its accuracy is not
+    significant (a nonlinearity of the displacement alone: the sensor path or the geometry), while a displacement
+    cause is judged as before."""
+    from labrig.diagnose.engine import Candidate, _significant
+
+    strain = Candidate("strain_resistance", {}, -3000.0, 1.0, 0.25, 0.0, 0.25)
+    arc = Candidate("large_deflection", {}, -2000.0, 1.0, 0.37, 0.0, 0.37)
+    assert [c.name for c in _significant([strain, arc], {"frf_d", "harm_d", "step_d"})] == ["large_deflection"]
+    assert [c.name for c in _significant([strain, arc], {"frf_d", "harm_i"})] == ["strain_resistance", "large_deflection"]
+    assert _significant([Candidate("faradaic_current", {}, -500.0, 1.0, 0.1, 0.0, 0.1)], {"step_d"}) == []
