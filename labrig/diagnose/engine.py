@@ -177,21 +177,18 @@ def noise_levels(ctx: Context) -> dict[str, float]:
     if ctx.sines:
         for key, me, sg in (("frf_d", np.array([s.Hd for s in ctx.sines]), np.array([s.est.disp_noise for s in ctx.sines])),
                             ("frf_i", np.array([s.Hi for s in ctx.sines]), np.array([s.est.cur_noise for s in ctx.sines]))):
-            # the estimates' noise is the std of a complex mean (np.std of complex: both parts together); the block
-            # holds the real and imaginary parts apart, each with 1/sqrt(2) of it. The cycle-to-cycle scatter reads
-            # ~2x what white noise leaves in the residual (SineEstimate.noise_inflation): the blocks' sigma keeps it
-            # (the thresholds were set in those units), the level the noise alone reaches does not
-            # Normalised by a scatter of few cycles, a residual reads larger than by the true noise, E[s^2/s_hat^2] =
-            # dof/(dof - 2) (capped at 4), on the scatter's part of sigma only (the floors are not estimates)
+            # What white noise alone leaves in the block: the estimates' noise is the std of a complex mean (both
+            # parts together; the block holds them apart, each with 1/sqrt(2) of it), and the cycle-to-cycle scatter
+            # reads ~2x the whole record's estimate (SineEstimate.noise_inflation; the blocks' sigma keeps it: the
+            # thresholds were set in those units). Normalised by a scatter of few cycles a residual reads larger than
+            # by the true noise, E[s^2/s_hat^2] = dof/(dof - 2) (capped at 4), on the scatter's part of sigma only
             n = np.nan_to_num(sg, nan=0.0)
             own = n / np.array([s.est.noise_inflation for s in ctx.sines]) / math.sqrt(2)
             dof = np.array([s.est.noise_dof for s in ctx.sines], float)
             chi = np.where(dof > 2, np.sqrt(dof / np.maximum(dof - 2, 1e-9)), 2.0)
-            floor = np.sqrt(np.maximum(_frf_sigma(me, sg) ** 2 - n**2, 0.0))
-            out[key] = rms(own / np.hypot(n / chi, floor))
+            out[key] = rms(own / np.hypot(n / chi, FRF_FLOOR * np.abs(me)))
             rel = n / np.abs(me)
-            floor = np.sqrt(np.maximum(_harm_sigma(rel) ** 2 - rel**2, 0.0))
-            out["harm_" + key[-1]] = rms(np.nan_to_num(own / np.abs(me) / np.hypot(rel / chi, floor)))
+            out["harm_" + key[-1]] = rms(np.nan_to_num(own / np.abs(me) / np.hypot(rel / chi, HARM_FLOOR)))
         out["force"] = 1.0  # its unit is the indicator's counts alone
     for key, attr in (("step_d", "d"), ("step_i", "i")):
         lv = [getattr(st, f"noise_{attr}") / _step_sigma(getattr(st, f"noise_{attr}"), float(np.sqrt(np.mean(getattr(st, attr) ** 2))) or 1.0)

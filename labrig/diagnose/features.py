@@ -38,7 +38,6 @@ class SineFeature:
     force_slope_sigma: float = float("nan")  # N/s: from the readings' scatter and the indicator's resolution
     bend_m: float = 0.0  # the mean bend the sine rides on, from the laser's rest reading at its pressure
 
-
     @property
     def Hd(self) -> complex:
         return self.est.H_disp
@@ -160,13 +159,17 @@ def _decimate(r: TimeRecord, rate: float) -> tuple[int, tuple[np.ndarray, ...]]:
     return q, tuple(a[:n].reshape(-1, q).mean(axis=1) for a in (r.t, r.v, r.d, r.i))
 
 
+def _pressure(r: TimeRecord) -> float | None:
+    p = r.meta.get("pressure_kPa")
+    return float(p) if p is not None else None
+
+
 def _rest_readings(records) -> dict[float | None, float]:
     """The laser's reading of the strip at rest per pressure: the median before the first step's onset (the zero
     a sine's bend is measured from; a laser zeroed elsewhere would otherwise read as a bend)."""
     out: dict[float | None, float] = {}
     for r in records:
-        p = r.meta.get("pressure_kPa")
-        p = float(p) if p is not None else None
+        p = _pressure(r)
         if r.kind == "step" and p not in out:
             pre = r.t < step_onset(r)
             if pre.sum() > 8:
@@ -188,8 +191,7 @@ def extract(sd: SessionData) -> Features:
     first_step: set[float | None] = set()
     rest = _rest_readings(records)
     for r in records:
-        p = r.meta.get("pressure_kPa")
-        p = float(p) if p is not None else None
+        p = _pressure(r)
         slope, fmean, slope_sigma = _force_slope(r)
         if r.kind in SINE_KINDS and "frequency_Hz" in r.meta:
             f = float(r.meta["frequency_Hz"])

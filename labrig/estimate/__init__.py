@@ -87,7 +87,7 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     """Demodulate a stepped-sine or harmonic record after its settling cycles."""
     sl = _demod_span(np.asarray(t), f, settle_cycles, cycles)
     tt, vv, ii, dd = (np.asarray(a)[sl] for a in (t, v, i, d))
-    per_cycle_d, per_cycle_i = [], []
+    per_cycle_d, per_cycle_i, per_cycle_var = [], [], []
     fs = 1.0 / np.median(np.diff(tt))
     n1 = int(round(fs / f))
     for c in range(max(int(tt.size // n1), 1)):
@@ -95,13 +95,13 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
         vd = demodulate(tt[s], vv[s], f)[0]
         per_cycle_d.append(demodulate(tt[s], dd[s], f)[0] / vd)
         per_cycle_i.append(demodulate(tt[s], ii[s], f)[0] / vd)
+        per_cycle_var.append(_fundamental_variance(tt[s], f, 1))
     nc = len(per_cycle_d)
     dn = float(np.std(per_cycle_d) / np.sqrt(nc)) if nc > 1 else float("nan")
     cn = float(np.std(per_cycle_i) / np.sqrt(nc)) if nc > 1 else float("nan")
     inflation = 1.0
     if nc > 1:  # white noise: E[std^2] (ddof 0) = (nc - 1)/nc of a one-cycle fit's variance; over nc, against the whole fit's
-        per_cycle = np.mean([_fundamental_variance(tt[c * n1:(c + 1) * n1], f, 1) for c in range(nc)])
-        inflation = float(np.sqrt((nc - 1) / nc * per_cycle / nc / _fundamental_variance(tt, f, harmonics)))
+        inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics)))
     return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn,
                         inflation, 2 * (nc - 1) if nc > 1 else 0, float(np.mean(dd)) if dd.size else 0.0)
 
