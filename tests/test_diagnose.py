@@ -1,6 +1,8 @@
 """The diagnosis: two hidden effects at once, imported data, bad input (coverage over the catalogue: test_diagnose_coverage.py)."""
 
 import json
+
+import pytest
 import subprocess
 import sys
 from pathlib import Path
@@ -128,3 +130,33 @@ def test_a_cause_of_the_current_needs_the_current_missed():
     assert [c.name for c in _significant([strain, arc], {"frf_d", "harm_d", "step_d"})] == ["large_deflection"]
     assert [c.name for c in _significant([strain, arc], {"frf_d", "harm_i"})] == ["strain_resistance", "large_deflection"]
     assert _significant([Candidate("faradaic_current", {}, -500.0, 1.0, 0.1, 0.0, 0.1)], {"step_d"}) == []
+
+
+def test_the_fourth_pass_forms_follow_their_physics():
+    """The drying curve is continuous in value and rate at its critical moisture and ends at 1; the charge passed
+    grows within a record and stops between records; the adsorption branch draws the Langmuir peak's charge
+    4 v_t c on a sweep across it and none back at rest."""
+    import numpy as np
+
+    from labrig.diagnose import families
+    from labrig.diagnose.features import Features
+
+    u = np.linspace(0, 1, 2001)
+    x = families._falling_rate(u, (0.3, 0.8))
+    assert x[0] == 0 and abs(x[-1] - 1) < 1e-12 and np.all(np.diff(x) > 0)
+    rate = np.gradient(x, u)
+    k = np.searchsorted(u, 0.3)
+    assert abs(rate[k - 3] - rate[k + 3]) < 0.02 * rate[k - 3]  # the rate is continuous at u_c
+    assert rate[-1] < 0.5 * rate[0]  # and falls after it
+
+    feats = Features(t0=0.0, t1=100.0, passed=[(0.0, 10.0, 2.0), (50.0, 10.0, 6.0)])
+    q = feats.charge_share(np.array([0.0, 5.0, 10.0, 30.0, 55.0, 100.0]))
+    np.testing.assert_allclose(q, [0.0, 0.125, 0.25, 0.25, 0.625, 1.0])
+    assert Features(t0=0.0, t1=100.0).charge_share(50.0) == 0.5  # no current recorded: the clock's share
+
+    v = np.linspace(-1.0, 1.0, 20001)
+    th = (3e-4, 0.0, 0.4, 0.05, 0.0, 0.2)
+    i = families._adsorption(v, th, np.ones_like(v))  # a sweep at 1 V/s
+    np.testing.assert_allclose(np.trapezoid(i, v), 4 * 0.05 * 3e-4, rtol=1e-3)
+    assert v[np.argmax(i)] == pytest.approx(0.4, abs=1e-3)
+    assert families._adsorption(np.array([0.4]), th, np.zeros(1))[0] == 0.0

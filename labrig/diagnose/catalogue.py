@@ -163,12 +163,19 @@ def _play_df(a: np.ndarray, r: float) -> tuple[np.ndarray, np.ndarray]:
 
 def _hysteresis(th, ctx):
     w, r, gain = th
+    return played_drive(w, [r], gain, ctx)
+
+
+def played_drive(w: float, radii, gain: float, ctx: Context) -> "Prediction":
+    """The strip driven by (1 - w) v + w P[v], P the mean of play operators of the given half-widths (one: a
+    play; several: a Prandtl-Ishlinskii operator with their density), the gain refitted (the baseline's alpha
+    already took in the average loss of gain the memory causes). Sines by describing function, the step through
+    the strip's dynamics from rest."""
     p = baseline(ctx)
-    # gain refitted: the baseline's alpha already took in the average loss of gain the hysteresis causes
     if ctx.sines:
         drv = np.array([_drive(s) for s in ctx.sines])
         a = np.abs(drv)
-        n1, n3 = _play_df(a, r)
+        n1, n3 = (np.mean(x, axis=0) for x in zip(*(_play_df(a, r) for r in radii)))
         g1 = (1 - w) + w * n1
         p.Hd = p.Hd * g1 * gain
         p.hd[:, 1] = w * n3 * ctx.Hd3 / (g1 * ctx.Hd) * (drv / a) ** 2
@@ -179,7 +186,7 @@ def _hysteresis(th, ctx):
         q = st.q
         n = (st.v_full.size // q) * q
         vb = st.v_full[:n].reshape(-1, q).mean(axis=1)
-        yb = _play(vb, r)
+        yb = np.mean([_play(vb, r) for r in radii], axis=0)
         played = np.r_[np.repeat(yb, q), np.full(st.v_full.size - n, yb[-1] if yb.size else 0.0)]
         veff = (1 - w) * st.v_full + w * played
         p.step_d[k] = gain * predict_step(sp, st, veff)[0]

@@ -22,7 +22,7 @@ from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction,
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import Refit, refit
-from labrig.diagnose.verdict import STRUCTURE_MARGIN, structured, where as locate_misses
+from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
 from labrig.physics.impedance import impedance
@@ -422,7 +422,13 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
     dof_chi2 = c_all / max(n_all, 1)
     structure = structured(held_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
-    if named:
+    clock = clock_offset(feats.sines, FRF_FLOOR)
+    if clock["flagged"]:
+        # the displacement is not periodic at the drive's frequency: whatever a catalogued extension gains on it,
+        # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
+        verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
+        named, accepted = [], []
+    elif named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0
         confidence = float(min(1.0, (second - named[0].heldout_ratio) / max(1.0 - named[0].heldout_ratio, 1e-9)))
@@ -438,6 +444,10 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     if accepted and adopted < len(accepted):
         cf, ch = _adopt(accepted[-1], cf, ch)
     residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(b_held, ctx_held, accuracy)
+    if clock["flagged"]:
+        residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
+                                  "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
+                                            f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
     best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
     return {
         "verdict": verdict,
@@ -455,6 +465,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
                      "accuracy": {k: accuracy[k] for k in held_rms}, "noise_level": noise_levels(ctx_held)},
         "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
+        "clock": clock,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},

@@ -19,9 +19,10 @@ names the effect by its signature; the form found is reported (``extended.form``
 from __future__ import annotations
 
 import numpy as np
+from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
-                                      creep_since_first_record, follow_force)
+                                      creep_since_first_record, follow_force, played_drive)
 from labrig.physics import timeresp
 
 _N = 64
@@ -61,34 +62,54 @@ def _pair(s, th):
 # ------------------------------------------------------------------------------------------ faradaic branches
 
 
-def _branch(fun):
-    """A parallel current branch i_b = fun(v, theta): harmonics 1-3 of each sine over one period of the measured
-    drive's fundamental (numerically: any form), the step's current added sample by sample."""
+def _branch(fun, lagged: bool = False):
+    """A parallel current branch i_b = fun(v, theta, dv/dt): harmonics 1-3 of each sine over one period of the
+    measured drive's fundamental (numerically: any form), the step's current at the record's own rate (a charge
+    drawn at the edge lands in the block it was drawn in), then block-averaged as the step is compared. ``lagged``:
+    the branch sees the interface's potential, the drive through the double layer's charging, 1/(1 + s tau) with
+    tau the last parameter (a Randles cell: the faradaic branch sits behind R_s, beside C_dl)."""
 
     def apply(th, ctx: Context):
+        law_th, tau = (th[:-1], th[-1]) if lagged else (th, 0.0)
         p = baseline(ctx)
         for k, s in enumerate(ctx.sines):
             a = _drive(s)
-            c = np.fft.fft(fun((a * np.exp(1j * _TH)).real, th))[1:4] * 2 / _N
+            ph = a / (1 + 2j * np.pi * s.f * tau) * np.exp(1j * _TH)
+            c = np.fft.fft(fun(ph.real, law_th, (2j * np.pi * s.f * ph).real))[1:4] * 2 / _N
             x = np.array([p.Hi[k] * a, p.hi[k, 0] * p.Hi[k] * a, p.hi[k, 1] * p.Hi[k] * a]) + c
             p.Hi[k], p.hi[k] = x[0] / a, x[1:] / x[0]
         for k, st in enumerate(ctx.steps):
-            p.step_i[k] = p.step_i[k] + fun(st.v, th)
+            v = st.v_full
+            if tau > 0 and v.size > 1:
+                v = lfilter([-np.expm1(-1 / (st.fs_full * tau))], [1, -np.exp(-1 / (st.fs_full * tau))], v - v[0]) + v[0]
+            dv = np.gradient(v) * st.fs_full if v.size > 1 else np.zeros_like(v)
+            p.step_i[k] = p.step_i[k] + st.decimate(fun(v, law_th, dv))
         return p
 
     return apply
 
 
-def _poly3(v, th):
+def _poly3(v, th, dv=None):
     g1, g2, g3 = th
     return g1 * v + g2 * v**2 + g3 * v**3
 
 
-def _exponential(v, th):
+def _exponential(v, th, dv=None):
     """Butler-Volmer with transfer coefficient a (a = 0.5: sinh; a -> 1: Tafel, one-sided), i1 the current at 1 V."""
     i1, vt, a = th
     f = lambda x: np.exp(np.clip(a * x / vt, -60, 60)) - np.exp(np.clip(-(1 - a) * x / vt, -60, 60))  # noqa: E731
     return i1 * f(v) / f(np.array(1.0))
+
+
+def _adsorption(v, th, dv):
+    """Hydrogen adsorption on the platinum electrodes ahead of its evolution: a Langmuir pseudo-capacitance
+    C(v) = c sech^2((v -+ E0)/(2 v_t)) drawing C(v) dv/dt (a peak of charge q = 4 v_t c at E0 on each polarity,
+    c_pos and c_neg apart: the two electrodes differ), and the evolution's exponential tail past it on one side,
+    i_t exp((|v| - 1 V)/v_e) (i_t > 0: positive drive, < 0: negative)."""
+    c_pos, c_neg, e0, vt, i_t, ve = th
+    peaks = c_pos / np.cosh((v - e0) / (2 * vt)) ** 2 + c_neg / np.cosh((v + e0) / (2 * vt)) ** 2
+    side = np.where(i_t >= 0, v > 0, v < 0)
+    return peaks * dv + i_t * np.exp(np.clip((np.abs(v) - 1.0) / ve, -60, 60)) * side
 
 
 # ------------------------------------------------------------------------------------------ sensor-side memory
@@ -112,16 +133,30 @@ def _play_output(th, ctx: Context):
     return p
 
 
+def _pi_drive(th, ctx: Context):
+    """Memory of the electromechanical coupling as a Prandtl-Ishlinskii operator: plays of half-widths r_max (k +
+    1/2)/4, k = 0..3, weighed alike (a density of coercivities, as a Preisach density's projection: loops that round
+    off instead of the single play's corners)."""
+    w, r_max, gain = th
+    return played_drive(w, r_max * (np.arange(4) + 0.5) / 4, gain, ctx)
+
+
 # ------------------------------------------------------------------------------------------ strain as a gain loss
 
 
 def _strain_modulation(th, ctx: Context):
     """Electrode resistance rising with the bend, read as an instantaneous loss of gain on displacement and current:
     y = y_lin (1 - k e), e = 2 (a max(d, 0) + (1 - a) max(-d, 0)) / L (a = 0.5: both electrodes alike; a -> 0 or 1:
-    one electrode, one side of the bend: even harmonics). Harmonics over one period, the step sample by sample."""
-    kd, ki, a = th
+    one electrode, one side of the bend: even harmonics). With a fourth parameter e_s the loss saturates,
+    y_lin (1 - k tanh(e / e_s)) (k then the saturated loss): the cracks' density reaches the film's minimum
+    spacing (Punning et al.) and the resistance stops rising. Harmonics over one period, the step sample by sample."""
+    kd, ki, a, *sat = th
     p = baseline(ctx)
-    bend = lambda d: 2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length  # noqa: E731
+
+    def bend(d):
+        e = 2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length
+        return np.tanh(e / sat[0]) if sat else e
+
     for k, s in enumerate(ctx.sines):
         drv = _drive(s)
         e = bend(s.bend_m + (p.Hd[k] * drv * np.exp(1j * _TH)).real)
@@ -139,28 +174,45 @@ def _strain_modulation(th, ctx: Context):
 # ------------------------------------------------------------------------------------------ drying
 
 
-def _drying(shape):
-    """Water loss over the session with a shape x(u) in 0..1 (u: session time over its span): the displacement's
-    gain falls by k_d x and the conductance by k_i x (one loss of water: the mobile ions' share dries with it, more
-    slowly or faster), each from a level of its own. The level is free because the baseline's alpha and
-    electrical values were fitted on data already drying: they hold the session's average, not the wet strip."""
+def _drying(loss):
+    """Water loss over the session, ``loss(t, sh, ctx)`` in 0..1 at rig time t: the displacement's gain falls by
+    k_d x and the conductance by k_i x (one loss of water: the mobile ions' share dries with it, more slowly or
+    faster), each from a level of its own. The level is free because the baseline's alpha and electrical values
+    were fitted on data already drying: they hold the session's average, not the wet strip."""
 
     def apply(th, ctx: Context):
         lev_d, k_d, lev_i, k_i, *sh = th
         p = baseline(ctx)
-        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-        u = lambda t: np.clip((t - ctx.feats.t0) / span, 0.0, 1.0)  # noqa: E731
         for k, s in enumerate(ctx.sines):
-            x = shape(u(s.t_start), sh)
+            x = loss(np.array(s.t_start), sh, ctx)
             p.Hd[k] *= lev_d * (1 - k_d * x)
             p.Hi[k] *= lev_i * (1 - k_i * x)
         for k, st in enumerate(ctx.steps):
-            x = shape(u(st.t_start + (st.t - st.t[0])), sh)  # the loss runs on during a long step record
+            x = loss(st.t_start + (st.t - st.t[0]), sh, ctx)  # the loss runs on during a long step record
             p.step_d[k] = p.step_d[k] * lev_d * (1 - k_d * x)
             p.step_i[k] = p.step_i[k] * lev_i * (1 - k_i * x)
         return p
 
     return apply
+
+
+def _session_time(shape):
+    """A loss that follows the clock: shape(u) of u, the session's time over its span."""
+
+    def loss(t, sh, ctx: Context):
+        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+        return shape(np.clip((t - ctx.feats.t0) / span, 0.0, 1.0), sh)
+
+    return _drying(loss)
+
+
+def _by_charge(t, sh, ctx: Context):
+    """Electro-osmotic drying: the hydrated cations drag water to the cathode, where it leaves the polymer, so the
+    strip dries while it is driven, with the charge passed (Q = int |i| dt over the session's records, in the
+    order they ran), beside the clock's evaporation: x = (1 - a) u + a Q(t)/Q_end."""
+    (a,) = sh
+    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+    return (1 - a) * np.clip((t - ctx.feats.t0) / span, 0.0, 1.0) + a * ctx.feats.charge_share(t)
 
 
 def _linear(u, sh):
@@ -181,13 +233,14 @@ def _power(u, sh):
     return u**n
 
 
-def _sigmoid(u, sh):
-    """A loss that sets in late and runs its course (the surface film first, then the bulk past a drying front):
-    a logistic in session time, centre m, width w (session spans), 0 at the start. w >= 0.1: a narrower front
-    cannot be told from a step in gain between two pressures' blocks of records, which any per-pressure misfit is."""
-    m, w = sh
-    f = lambda x: 1.0 / (1.0 + np.exp(-(x - m) / w))  # noqa: E731
-    return (f(u) - f(0.0)) / (f(1.0) - f(0.0))
+def _falling_rate(u, sh):
+    """The classic drying curve: a constant-rate period (surface water leaving at a fixed rate) up to the critical
+    moisture at u_c, then a falling-rate period in which the rate is proportional to the water still removable,
+    approaching it exponentially with the rate continuous at u_c; m is the removable water left at u_c over the
+    water lost by then. Normalised to 1 at the session's end."""
+    uc, m = sh
+    f = lambda x: np.where(x < uc, x / uc, 1.0 + m * -np.expm1(-(x - uc) / (uc * m)))  # noqa: E731
+    return f(u) / f(np.array(1.0))
 
 
 # ------------------------------------------------------------------------------------------ clamp creep
@@ -297,20 +350,31 @@ FAMILIES["faradaic_current"] += [
           _branch(_poly3), "parallel branch i = g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics)"),
     _form("faradaic_current", "exponential", ("i_at_1V_A", "v_t_V", "alpha"), (3e-4, 0.15, 0.5), (-0.05, 0.03, 0.0), (0.05, 2.0, 1.0),
           _branch(_exponential), "Butler-Volmer branch i ~ exp(a v/v_t) - exp(-(1 - a) v/v_t) (a -> 1: Tafel, growing exponentially)"),
+    _form("faradaic_current", "adsorption", ("c_pos_F", "c_neg_F", "e0_V", "v_t_V", "i_tail_A", "v_e_V", "interface_tau_s"),
+          (2e-4, 2e-4, 0.4, 0.06, 1e-4, 0.2, 0.03), (0.0, 0.0, 0.05, 0.01, -0.05, 0.03, 0.0), (0.05, 0.05, 1.5, 0.3, 0.05, 1.0, 0.5),
+          _branch(_adsorption, lagged=True),
+          "Langmuir adsorption peaks C(v) dv/dt at +-E0 and the evolution's exponential tail on one side, at the interface's potential"),
 ]
 FAMILIES["hysteresis"] += [
+    _form("hysteresis", "pi_drive", ("weight", "play_max_V", "gain"), (0.3, 0.3, 1.0), (0.0, 1e-3, 0.2), (1.0, 1.5, 5.0), _pi_drive,
+          "Prandtl-Ishlinskii operator on the drive, plays of half-widths spread evenly up to r_max (smooth loops, a remanent bend)"),
     # the baseline's mechanics took in the gain and phase the play costs at each pressure's amplitudes: refitted with it
     _form("hysteresis", "play_output", ("weight", "play_um"), (0.3, 50.0), (0.0, 0.1), (1.0, 5000.0), _play_output,
           "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side"),
 ]
 _DRY = ("gain_level", "gain_loss", "conductance_level", "conductance_loss")
 FAMILIES["dehydration"] += [
-    _form("dehydration", "linear", _DRY, (1.0, 0.2, 1.0, 0.1), (0.5, -0.5, 0.5, -0.5), (2.0, 0.9, 2.0, 0.9), _drying(_linear),
+    _form("dehydration", "linear", _DRY, (1.0, 0.2, 1.0, 0.1), (0.5, -0.5, 0.5, -0.5), (2.0, 0.9, 2.0, 0.9), _session_time(_linear),
           "gain and conductance falling linearly with session time from levels of their own (zero-order evaporation)"),
     _form("dehydration", "saturating", (*_DRY, "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.3), (0.5, -0.5, 0.5, -0.5, 0.03), (2.0, 0.9, 2.0, 0.9, 5.0),
-          _drying(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
+          _session_time(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
     _form("dehydration", "power", (*_DRY, "exponent"), (1.0, 0.2, 1.0, 0.1, 0.5), (0.5, -0.5, 0.5, -0.5, 0.2), (2.0, 0.9, 2.0, 0.9, 3.0),
-          _drying(_power), "gain and conductance falling as a power of session time, t^n (n = 1/2: diffusion through a drying skin)"),
+          _session_time(_power), "gain and conductance falling as a power of session time, t^n (n = 1/2: diffusion through a drying skin)"),
+    _form("dehydration", "falling_rate", (*_DRY, "critical_u", "removable_ratio"), (1.0, 0.2, 1.0, 0.1, 0.4, 0.5),
+          (0.5, -0.5, 0.5, -0.5, 0.05, 0.05), (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), _session_time(_falling_rate),
+          "a constant drying rate up to the critical moisture, then a falling rate towards the removable water (the drying curve)"),
+    _form("dehydration", "charge", (*_DRY, "charge_share"), (1.0, 0.2, 1.0, 0.1, 0.7), (0.5, -0.5, 0.5, -0.5, 0.0), (2.0, 0.9, 2.0, 0.9, 1.0),
+          _drying(_by_charge), "gain and conductance falling with the charge passed (electro-osmotic drag), beside the clock's evaporation"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
 FAMILIES["clamp_relaxation"] += [
@@ -334,6 +398,9 @@ FAMILIES["time_delay"] += [
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
           _strain_modulation, "gain of displacement and current falling with the bend, y (1 - k e(d)): resistance up with curvature"),
+    _form("strain_resistance", "saturating", ("loss_disp", "loss_cur", "asymmetry", "strain_sat"), (0.02, 0.05, 0.5, 0.02),
+          (-0.9, -0.9, 0.0, 1e-3), (0.9, 0.9, 1.0, 0.5), _strain_modulation,
+          "gain loss with the bend saturating, y (1 - k tanh(e(d)/e_s)): the crack density at its limit"),
 ]
 
 

@@ -118,6 +118,17 @@ class Features:
     lines: list[LineFeature] = field(default_factory=list)
     t0: float = 0.0  # earliest record start (s, rig clock)
     t1: float = 1.0  # latest record end (s, rig clock)
+    # every time record's (start, duration, charge int |i| dt): what the drive has passed through the strip by a
+    # moment of the session (drying by electro-osmotic drag follows it, not the clock)
+    passed: list[tuple[float, float, float]] = field(default_factory=list)
+
+    def charge_share(self, t: np.ndarray | float) -> np.ndarray:
+        """The share of the session's charge passed before rig time t (linear within a record), 0..1."""
+        t = np.asarray(t, float)
+        total = sum(q for _, _, q in self.passed)
+        if total <= 0:
+            return np.clip((t - self.t0) / max(self.t1 - self.t0, 1.0), 0.0, 1.0)
+        return sum(q * np.clip((t - t0) / max(dur, 1e-9), 0.0, 1.0) for t0, dur, q in self.passed) / total
 
     def pressures(self) -> list[float]:
         ps = {s.pressure_kPa for s in self.sines} | {s.pressure_kPa for s in self.steps}
@@ -191,6 +202,8 @@ def extract(sd: SessionData) -> Features:
     first_step: set[float | None] = set()
     rest = _rest_readings(records)
     for r in records:
+        if np.isfinite(r.t_start) and r.t.size > 1:
+            feats.passed.append((r.t_start, float(r.t[-1] - r.t[0]), float(np.trapezoid(np.abs(r.i - np.median(r.i)), r.t))))
         p = _pressure(r)
         slope, fmean, slope_sigma = _force_slope(r)
         if r.kind in SINE_KINDS and "frequency_Hz" in r.meta:

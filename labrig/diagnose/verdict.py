@@ -12,6 +12,7 @@ or line it sits.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -124,3 +125,29 @@ def where(bl: dict, ctx, accuracy: dict[str, float]) -> list[dict[str, Any]]:
         if level > acc:
             out.append({"block": name, "level": level, "over_accuracy": level / acc, **locate(name, r, ctx)})
     return sorted(out, key=lambda w: -w["over_accuracy"])
+
+
+# A displacement recorded on a clock off the drive's: its phase against the drive walks by 2 pi eps per cycle. No
+# catalogued cause does that (each one's response is periodic at the drive's frequency), so a session whose sine
+# records agree on a significant eps is outside the catalogue. Two tests, neither set on a set of sessions: the
+# weighted mean eps over the records is beyond CLOCK_Z of its standard error, scaled up by the records' own
+# scatter about it (sqrt(chi2/dof) when > 1); and the phase error it makes over a median record's half-length,
+# pi eps cycles, is beyond the FRF's model floor (``engine.FRF_FLOOR``, rad): below that no block can see it.
+CLOCK_Z = 5.0
+
+
+def clock_offset(sines, floor_rad: float) -> dict[str, Any]:
+    """The displacement's clock against the drive's from the sine records' phase trends (``SineEstimate``)."""
+    e = np.array([s.est.phase_drift for s in sines], float) / (2 * np.pi)
+    sg = np.array([s.est.phase_drift_sigma for s in sines], float) / (2 * np.pi)
+    ok = np.isfinite(sg) & (sg > 0) & np.isfinite(e)
+    if ok.sum() < 3:
+        return {"relative_offset": 0.0, "z": 0.0, "phase_error_rad": 0.0, "records": int(ok.sum()), "flagged": False}
+    w = 1 / sg[ok] ** 2
+    m = float(np.sum(w * e[ok]) / np.sum(w))
+    scatter = math.sqrt(max(float(np.sum(w * (e[ok] - m) ** 2)) / (ok.sum() - 1), 1.0))
+    z = m / (scatter / math.sqrt(float(np.sum(w))))
+    cycles = float(np.median([s.est.noise_dof / 2 + 1 for s, k in zip(sines, ok) if k]))  # whole cycles demodulated
+    phase = math.pi * abs(m) * cycles
+    return {"relative_offset": m, "z": float(z), "phase_error_rad": phase, "records": int(ok.sum()),
+            "flagged": bool(abs(z) > CLOCK_Z and phase > floor_rad)}

@@ -28,6 +28,11 @@ class SineEstimate:
     noise_inflation: float = 1.0
     noise_dof: int = 0  # degrees of freedom of the scatter (both parts of nc cycles: 2 (nc - 1)); 0: none
     disp_mean: float = 0.0  # mean displacement over the demodulated whole cycles: the bend the sine rides on
+    # the displacement's phase against the drive's, its trend over the record's cycles (rad per cycle) and the
+    # trend's standard error: 0 for any response periodic at the drive's frequency; 2 pi eps for a displacement
+    # recorded on a clock (1 + eps) off the drive's
+    phase_drift: float = 0.0
+    phase_drift_sigma: float = float("nan")
 
     @property
     def H_disp(self) -> complex:
@@ -102,8 +107,22 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     inflation = 1.0
     if nc > 1:  # white noise: E[std^2] (ddof 0) = (nc - 1)/nc of a one-cycle fit's variance; over nc, against the whole fit's
         inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics)))
+    drift, drift_sigma = _phase_trend(np.array(per_cycle_d))
     return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), demodulate(tt, dd, f, harmonics), dn, cn,
-                        inflation, 2 * (nc - 1) if nc > 1 else 0, float(np.mean(dd)) if dd.size else 0.0)
+                        inflation, 2 * (nc - 1) if nc > 1 else 0, float(np.mean(dd)) if dd.size else 0.0, drift, drift_sigma)
+
+
+def _phase_trend(per_cycle: np.ndarray) -> tuple[float, float]:
+    """(slope, standard error) of the per-cycle phase about its mean over the cycle index, rad per cycle; the error
+    from the line's own residuals (nan with fewer than 4 cycles: two dof are too few to tell a trend from noise)."""
+    n = per_cycle.size
+    if n < 4 or not np.all(np.isfinite(per_cycle)) or not np.any(per_cycle):
+        return 0.0, float("nan")
+    ph = np.unwrap(np.angle(per_cycle / np.mean(per_cycle)))
+    c = np.arange(n) - (n - 1) / 2
+    slope = float(c @ ph / (c @ c))
+    res = ph - ph.mean() - slope * c
+    return slope, float(np.sqrt(res @ res / (n - 2) / (c @ c)))
 
 
 def _fundamental_variance(t: np.ndarray, f: float, harmonics: int, trend: int = 2) -> float:
