@@ -11,8 +11,12 @@
 * Fresh2 held-out set (``--set fresh2``, bench/inject_fresh2.py ``fresh2_cases``): two further forms per effect and
   three further outside structures, written by someone who had not seen the diagnosis' model families, on seeds
   41-43 (paper, seed-001, 40 mm strips) and two new data shapes (decimated by 3, each CSV on its own clock).
+  Its misses were seen and acted on in the fourth pass.
+* Fresh3 held-out set (``--set fresh3``, bench/inject_fresh3.py ``fresh3_cases``): two more forms per effect and
+  three more outside structures by an author who had not seen the model families, seeds 51-53 (paper, seed-001,
+  35 mm strips), diagnosed once, with the fourth pass's final code.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -24,6 +28,7 @@ held-out error (ratio <= 0.5); `labrig diagnose` (fit + diagnosis) <= 60 s.
 from __future__ import annotations
 
 import argparse
+import importlib
 import statistics
 import sys
 import tempfile
@@ -88,17 +93,20 @@ def tuning(a) -> list:
     return results
 
 
-def validation(a, fresh: bool = False, fresh2: bool = False) -> list:
+LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fresh held-out set (unseen)",
+          "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (unseen)"}
+
+
+def validation(a, name: str = "validation") -> list:
     sys.path.insert(0, str(REPO / "bench"))
     import inject
 
     runner = inject  # whose run_all: its workers must import the module that registers the set's forms
-    if fresh2:
-        import inject_fresh2  # registers its forms, bases and variants in inject
-
-        runner, todo = inject_fresh2, inject_fresh2.fresh2_cases()
+    if name in ("fresh2", "fresh3"):
+        runner = importlib.import_module(f"inject_{name}")  # registers its forms, bases and variants in inject
+        todo = getattr(runner, f"{name}_cases")()
     else:
-        todo = inject.fresh_cases() if fresh else inject.cases(extra=a.extra, full=a.full)
+        todo = inject.fresh_cases() if name == "fresh" else inject.cases(extra=a.extra, full=a.full)
     t0 = time.perf_counter()
     folder = Path(a.cache or REPO / ".cache") / "validation"
     if a.stored:
@@ -113,16 +121,14 @@ def validation(a, fresh: bool = False, fresh2: bool = False) -> list:
                                            float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)), c))
     else:
         results = runner.run_all(folder, todo, a.jobs, a.reuse)
-    label = ("fresh2 held-out set (unseen)" if fresh2 else "fresh held-out set (unseen)" if fresh
-             else "validation set (seen in the first pass)")
-    print(f"== {label}: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
+    print(f"== {LABELS[name]}: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     inject.report(results)
     return [r for r, _ in results]
 
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--set", choices=("both", "tuning", "validation", "fresh", "fresh2", "all"), default="both")
+    ap.add_argument("--set", choices=("both", "tuning", *LABELS, "all"), default="both")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--none-seeds", type=int, default=10)
     ap.add_argument("--first-seed", type=int, default=1, help="seeds first-seed, first-seed + 1, ...")
@@ -138,12 +144,10 @@ def main() -> None:
     results = []
     if a.set in ("both", "tuning"):
         results += tuning(a)
-    if a.set in ("both", "validation", "all") and not a.make_only:
-        results += validation(a)
-    if a.set in ("fresh", "all") and not a.make_only:
-        results += validation(a, fresh=True)
-    if a.set in ("fresh2", "all") and not a.make_only:
-        results += validation(a, fresh2=True)
+    for name in LABELS:
+        if a.set in (name, "all") or (a.set == "both" and name == "validation"):
+            if not a.make_only:
+                results += validation(a, name)
     times = [r.diagnose_s for r in results]
     if times and not a.stored:
         print(f"labrig diagnose wall time (fit + diagnosis), {a.jobs} at a time: median {statistics.median(times):.1f} s, "

@@ -322,7 +322,12 @@ class _Scorer:
         tuning set's drying seed 3 a free-level form won it by BIC and predicted the held-out pressures at 0.10
         against the exponential's 0.03, and a sensor offset took the name). The ratio reported is therefore
         the best of the family's forms (at most four): optimistic by that choice, said in docs/diagnosis.md."""
-        forms = [self.score_form(name, ext) for ext in FAMILIES[name]]
+        family = FAMILIES[name]
+        if not self.where or (name in CURRENT_CAUSES and not set(self.where) & CURRENT_BLOCKS):
+            # it cannot be named (nothing missed: no form gets below 1; a current cause needs the current missed,
+            # _significant): the catalogue's form alone, for the record
+            family = family[:1]
+        forms = [self.score_form(name, ext) for ext in family]
         return min(forms, key=lambda c: (c.delta_bic >= DBIC_EFFECT, max(c.heldout_ratio, c.ratio_vs_reference) if c.delta_bic < DBIC_EFFECT else c.delta_bic))
 
     def score_form(self, name: str, ext: Extension) -> Candidate:

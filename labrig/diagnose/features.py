@@ -8,6 +8,8 @@ during records, and narrow line-frequency components.
 
 from __future__ import annotations
 
+import functools
+
 import math
 from dataclasses import dataclass, field
 
@@ -128,7 +130,17 @@ class Features:
         total = sum(q for _, _, q in self.passed)
         if total <= 0:
             return np.clip((t - self.t0) / max(self.t1 - self.t0, 1.0), 0.0, 1.0)
-        return sum(q * np.clip((t - t0) / max(dur, 1e-9), 0.0, 1.0) for t0, dur, q in self.passed) / total
+        knots, share = self._charge_knots
+        return np.interp(t, knots, share)
+
+    @functools.cached_property
+    def _charge_knots(self) -> tuple[np.ndarray, np.ndarray]:
+        """The charge share is piecewise linear between the records' starts and ends: its values there, once (the
+        drying forms ask for it on every evaluation)."""
+        knots = np.unique([x for t0, dur, _ in self.passed for x in (t0, t0 + max(dur, 1e-9))])
+        total = sum(q for _, _, q in self.passed)
+        share = sum(q * np.clip((knots - t0) / max(dur, 1e-9), 0.0, 1.0) for t0, dur, q in self.passed) / total
+        return knots, share
 
     def pressures(self) -> list[float]:
         ps = {s.pressure_kPa for s in self.sines} | {s.pressure_kPa for s in self.steps}
