@@ -160,3 +160,65 @@ def test_the_fourth_pass_forms_follow_their_physics():
     np.testing.assert_allclose(np.trapezoid(i, v), 4 * 0.05 * 3e-4, rtol=1e-3)
     assert v[np.argmax(i)] == pytest.approx(0.4, abs=1e-3)
     assert families._adsorption(np.array([0.4]), th, np.zeros(1))[0] == 0.0
+
+
+def test_a_displacement_on_a_clock_of_its_own_is_told_from_one_on_the_drives():
+    """The per-cycle phase of the displacement drifts by 2 pi eps a cycle when its samples carry times of a clock
+    (1 + eps) off the drive's (a sensor logging on its own oscillator); on the drive's clock it does not drift, even
+    with a lag, a harmonic and noise. clock_offset flags the first in five records and not the second."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose.engine import FRF_FLOOR
+    from labrig.diagnose.verdict import clock_offset
+    from labrig.estimate import sine_estimate
+
+    rng = np.random.default_rng(7)
+
+    def record(f, eps):
+        t = np.arange(0, 12 / f, 1 / (200 * f))
+        v = np.sin(2 * np.pi * f * t)
+        d = 1e-4 * np.sin(2 * np.pi * f * (1 + eps) * t - 0.7) + 1e-6 * np.sin(4 * np.pi * f * t) + 2e-7 * rng.standard_normal(t.size)
+        return SimpleNamespace(est=sine_estimate(t, v, 1e-3 * v, d, f, settle_cycles=1))
+
+    est = record(1.0, 2e-3).est
+    assert est.phase_drift == pytest.approx(2 * np.pi * 2e-3, rel=0.05)
+    assert abs(record(1.0, 0.0).est.phase_drift) < 5 * record(1.0, 0.0).est.phase_drift_sigma + 1e-6
+    off = clock_offset([record(f, 2e-3) for f in (0.2, 0.5, 1.0, 2.0, 5.0)], FRF_FLOOR)
+    on = clock_offset([record(f, 0.0) for f in (0.2, 0.5, 1.0, 2.0, 5.0)], FRF_FLOOR)
+    assert off["flagged"] and off["relative_offset"] == pytest.approx(2e-3, rel=0.05)
+    assert not on["flagged"] and abs(on["relative_offset"]) < 1e-4
+
+
+def test_a_lagged_branch_sees_the_interface_potential():
+    """With the interface's lag tau the branch is driven by v / (1 + j w tau): on a sine its current is the unlagged
+    branch's at that potential (a linear branch g v gives g v / (1 + j w tau) exactly); tau = 0 is the unlagged form."""
+    import numpy as np
+
+    from labrig.diagnose import families
+
+    g, f, tau = 2e-3, 3.0, 0.02
+    lin = lambda v, th, dv: th[0] * v  # noqa: E731
+    lagged, plain = families._branch(lin, lagged=True), families._branch(lin)
+    ctx = _sine_context(f)
+    base = families.baseline(ctx)
+    with_lag = lagged(np.array([g, tau]), ctx)
+    no_lag = lagged(np.array([g, 0.0]), ctx)
+    unlagged = plain(np.array([g]), ctx)
+    np.testing.assert_allclose(no_lag.Hi, unlagged.Hi, rtol=1e-12)
+    np.testing.assert_allclose(with_lag.Hi - base.Hi, g / (1 + 2j * np.pi * f * tau), rtol=1e-6)
+    np.testing.assert_allclose(unlagged.Hi - base.Hi, g, rtol=1e-6)
+
+
+def _sine_context(f: float):
+    """A diagnosis context of one sine record at f (drive 0.8 V, baseline FRFs of round values), no steps."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose.catalogue import Context
+
+    sine = SimpleNamespace(f=f, est=SimpleNamespace(drive=np.array([0.8 + 0j])))
+    return Context(feats=None, specimens={}, sines=[sine], steps=[], lines=[], Hd=np.array([1e-3 + 0j]), Hi=np.array([1e-2 + 0j]),
+                   Hd3=np.array([0j]), step_d=[], step_i=[], force_nominal=np.zeros(1), area=1.0, length=1.0)
