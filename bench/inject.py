@@ -19,6 +19,7 @@ Run: python bench/inject.py [--cache .cache/validation] [--jobs 2] [--only NAME]
 from __future__ import annotations
 
 import argparse
+import importlib
 import math
 import shutil
 import subprocess
@@ -757,14 +758,54 @@ def stored(path: Path) -> dict | None:
     return out if "accuracy" in out.get("baseline", {}) and "form" in out.get("extended", {}) else None
 
 
-def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False) -> list:
+def _in_worker(job: tuple[str, str | None, tuple]):
+    """(function name, module, its args) in a spawned worker: the module registers its set's forms, bases and
+    variants here first (workers import modules by name, not the parent's state)."""
+    name, registers, args = job
+    if registers:
+        importlib.import_module(registers)
+    return {"run": run_case, "make": lambda a: make_case(Path(a[0]), a[1])}[name](args)
+
+
+def _pool_map(name: str, cache: Path, todo: list[Case], jobs: int, registers: str | None, extra: tuple = ()):
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
     for b in dict.fromkeys(c.base for c in todo):  # the bases first, one at a time (each is a simulated run)
         base_export(cache, b)
     with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        return list(pool.map(run_case, [(str(cache), c, reuse) for c in todo]))
+        yield from pool.map(_in_worker, [(name, registers, (str(cache), c, *extra)) for c in todo])
+
+
+def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False, registers: str | None = None) -> list:
+    """Make (or reuse) and diagnose every case, ``jobs`` at a time; ``registers``: the module of a further set."""
+    return list(_pool_map("run", cache, todo, jobs, registers, (reuse,)))
+
+
+def plan_cases(plan: dict, clean: list, only: str | None = None) -> list[Case]:
+    """A held-out set's cases from its plan (truth: [(form, seed, base, variant)]) and clean (seed, base, variant)."""
+    out = [Case(t, f, k, b, v) for t, rows in plan.items() for f, k, b, v in rows]
+    out += [Case("none", "clean", k, b, v) for k, b, v in clean]
+    return sorted([c for c in out if not only or c.truth == only], key=lambda c: c.seed)
+
+
+def make_set_main(cases: Callable[[str | None], list[Case]], registers: str, set_name: str) -> None:
+    """The command line of a held-out set's module: make its case files (never diagnose them)."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--cache", default=str(REPO / ".cache" / "validation"))
+    ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--only", default=None, help="one truth (effect name, unexplained or none)")
+    ap.add_argument("--limit", type=int, default=0, help="make only the first N cases (0: all)")
+    ap.add_argument("--make-only", action="store_true", help="make the case files (this script never diagnoses)")
+    a = ap.parse_args()
+    if not a.make_only:
+        ap.error(f"this script only makes the cases (--make-only); diagnose them with bench/diagnose.py --set {set_name}")
+    cache, todo = Path(a.cache), cases(a.only)
+    todo = todo[: a.limit] if a.limit else todo
+    t0 = time.perf_counter()
+    for path in _pool_map("make", cache, todo, a.jobs, registers):
+        print(f"  {time.perf_counter() - t0:6.0f} s  {path.name}", flush=True)
+    print(f"{len(todo)} cases made in {time.perf_counter() - t0:.0f} s")
 
 
 def report(results: list) -> dict[str, float]:

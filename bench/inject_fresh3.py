@@ -17,9 +17,7 @@ Run: python bench/inject_fresh3.py --make-only [--jobs 1] [--cache .cache/valida
 
 from __future__ import annotations
 
-import argparse
 import math
-import time
 from pathlib import Path
 from typing import Callable
 
@@ -713,57 +711,13 @@ CLEAN = [(51, P51, "asrun"), (51, P51, "rate07"), (52, S52, "asrun"), (52, S52, 
 
 def fresh3_cases(only: str | None = None) -> list[Case]:
     """The fourth held-out set: 30 effect cases, 5 outside the catalogue, 6 clean (seeds 51-53)."""
-    out = [Case(t, f, k, b, v) for t, rows in PLAN.items() for f, k, b, v in rows]
-    out += [Case("none", "clean", k, b, v) for k, b, v in CLEAN]
-    return sorted([c for c in out if not only or c.truth == only], key=lambda c: c.seed)
-
-
-def make_one(args: tuple[str, Case]) -> Path:
-    """inject.make_case in a process that has this set registered (a spawned worker imports this module)."""
-    return inject.make_case(Path(args[0]), args[1])
-
-
-def run_one(args: tuple):
-    return inject.run_case(args)
+    return inject.plan_cases(PLAN, CLEAN, only)
 
 
 def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False) -> list:
-    """inject.run_all with workers that import this module (so its forms, bases, preset and variant are known)."""
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    for b in dict.fromkeys(c.base for c in todo):
-        inject.base_export(cache, b)
-    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        return list(pool.map(run_one, [(str(cache), c, reuse) for c in todo]))
-
-
-def main() -> None:
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--cache", default=str(inject.REPO / ".cache" / "validation"))
-    ap.add_argument("--jobs", type=int, default=1)
-    ap.add_argument("--only", default=None, help="one truth (effect name, unexplained or none)")
-    ap.add_argument("--limit", type=int, default=0, help="make only the first N cases (0: all)")
-    ap.add_argument("--make-only", action="store_true", help="make the case files (this script never diagnoses)")
-    a = ap.parse_args()
-    if not a.make_only:
-        ap.error("this script only makes the cases (--make-only); diagnose them through inject_fresh3.run_all")
-    import inject_fresh3 as me  # workers pickle functions of this module by name, not of __main__
-
-    cache, todo = Path(a.cache), fresh3_cases(a.only)
-    todo = todo[: a.limit] if a.limit else todo
-    t0 = time.perf_counter()
-    for b in dict.fromkeys(c.base for c in todo):
-        inject.base_export(cache, b)
-    print(f"bases ready in {time.perf_counter() - t0:.0f} s", flush=True)
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    with ProcessPoolExecutor(a.jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        for c, path in zip(todo, pool.map(me.make_one, [(str(cache), c) for c in todo])):
-            print(f"  {time.perf_counter() - t0:6.0f} s  {path.name}", flush=True)
-    print(f"{len(todo)} cases made in {time.perf_counter() - t0:.0f} s")
+    """inject.run_all with workers that import this module (so its forms, bases and variants are known)."""
+    return inject.run_all(cache, todo, jobs, reuse, registers="inject_fresh3")
 
 
 if __name__ == "__main__":
-    main()
+    inject.make_set_main(fresh3_cases, "inject_fresh3", "fresh3")
