@@ -104,8 +104,13 @@ def _steps_done(path):
 
 
 def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
+    # A settle of 60 rig s (1.5 wall s at 40x) after the clamp: the signal, sent once the clamp is on
+    # disk, lands inside it however slowly the file is polled on a loaded machine; the settle has safe
+    # points every rig second, so the hold cannot miss it and the run cannot finish first.
+    toml = tmp_path / "step.toml"
+    toml.write_text(STEP_TOML.read_text().replace("settle_s = 5.0", "settle_s = 60.0"))
     out = tmp_path / "s.h5"
-    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(STEP_TOML), "--sim", "--quiet", "--time-scale", "40",
+    proc = subprocess.Popen([sys.executable, "-m", "labrig", "run", str(toml), "--sim", "--quiet", "--time-scale", "40",
                              "--out", str(out)], stderr=subprocess.PIPE, text=True)
     try:
         deadline = time.time() + 60
@@ -115,7 +120,8 @@ def test_sigusr1_pauses_and_resumes_a_headless_run(tmp_path):
         while _steps_done(out)[1] < 1 and time.time() < deadline:
             time.sleep(0.05)
         done_at_hold = _steps_done(out)[0]
-        time.sleep(1.0)  # 40 rig seconds: the 5 s settle and the 10 s step would be over if they ran
+        assert done_at_hold == 1  # held inside the settle
+        time.sleep(2.0)  # 80 rig seconds: the 60 s settle would be over if it ran
         assert _steps_done(out) == (done_at_hold, 1) and proc.poll() is None
         proc.send_signal(signal.SIGUSR1)
         assert proc.wait(60) == 0, proc.stderr.read()
