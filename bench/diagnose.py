@@ -14,9 +14,12 @@
   Its misses were seen and acted on in the fourth pass.
 * Fresh3 held-out set (``--set fresh3``, bench/inject_fresh3.py ``fresh3_cases``): two more forms per effect and
   three more outside structures by an author who had not seen the model families, seeds 51-53 (paper, seed-001,
-  35 mm strips), diagnosed once, with the fourth pass's final code.
+  35 mm strips), diagnosed once with the fourth pass's final code; its misses were seen and acted on in the fifth.
+* Fresh4 held-out set (``--set fresh4``, bench/inject_fresh4.py ``fresh4_cases``): two more forms per effect and
+  three more outside structures (three cases each) by an author who had not seen the diagnosis, seeds 61-63 (paper,
+  seed-001, 20 mm strips) and a new data shape (dropped DAQ packets), diagnosed once with the fifth pass's final code.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -94,7 +97,8 @@ def tuning(a) -> list:
 
 
 LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fresh held-out set (unseen)",
-          "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (unseen)"}
+          "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (seen in the fifth pass)",
+          "fresh4": "fresh4 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
@@ -102,7 +106,7 @@ def validation(a, name: str = "validation") -> list:
     import inject
 
     runner = inject  # whose run_all: its workers must import the module that registers the set's forms
-    if name in ("fresh2", "fresh3"):
+    if name in ("fresh2", "fresh3", "fresh4"):
         runner = importlib.import_module(f"inject_{name}")  # registers its forms, bases and variants in inject
         todo = getattr(runner, f"{name}_cases")()
     else:

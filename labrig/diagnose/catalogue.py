@@ -150,14 +150,11 @@ def _play_df(a: np.ndarray, r: float) -> tuple[np.ndarray, np.ndarray]:
     a = np.atleast_1d(np.asarray(a, float))
     x = a[:, None] * np.cos(_TH)[None, :]
     rr = np.minimum(r, 0.99 * a)[:, None]
-    # second cycle: the periodic state (rows have their own band, so shift instead of one r)
-    xx = np.tile(x, 2)
-    y = np.empty_like(xx)
-    prev = np.zeros(a.size)
-    for k in range(xx.shape[1]):
-        prev = np.minimum(np.maximum(prev, xx[:, k] - rr[:, 0]), xx[:, k] + rr[:, 0])
-        y[:, k] = prev
-    c = np.fft.rfft(y[:, _TH.size :], axis=1) / _TH.size * 2
+    # the periodic state in closed form (the recursion from the cosine's top, where the band sits at a - r): held at
+    # a - r until x + r comes down to it, then x + r to the bottom; held at r - a until x - r comes up to it
+    down = _TH[None, :] <= np.pi
+    y = np.where(down, np.minimum(a[:, None] - rr, x + rr), np.maximum(rr - a[:, None], x - rr))
+    c = np.fft.rfft(y, axis=1) / _TH.size * 2
     return c[:, 1] / a, c[:, 3] / a
 
 

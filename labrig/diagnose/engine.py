@@ -57,6 +57,9 @@ RATIO_FURTHER = 0.8
 # form happens to fit it (third pass: a form with a free current gain fitted 0 there). Not a threshold: a signature.
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
+# a block moved by no more than this share of its level is out of a form's reach (a linear form leaves the harmonics
+# exactly where they were: 0; the forms that can move them, by 2 % and more on the fresh3 set's friction cases)
+REACH_TOL = 0.01
 
 
 def baseline_specimens(fit) -> dict:
@@ -272,6 +275,12 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([3e-4, 0.1, 0.9]), np.array([3e-4, 0.1, 0.1])]
     if name == "hysteresis":
         starts += [np.array([0.5, 300.0])]
+    if ext.form == "pi_drive":
+        starts += [np.array([-0.4, 0.8, 1.0])]  # stop operators
+    if ext.form == "transport":
+        starts += [np.array([1e-4, 0.45, 0.04, 3.0, 3.0, 0.05])]  # a reduction wave at +-E_half (the first start: a couple at 0 V)
+    if ext.form == "pi_output":
+        starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)
     return [x for x in starts if x.size == len(ext.params) and np.all(x >= lo) and np.all(x <= hi)]
 
@@ -354,14 +363,34 @@ def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: 
     return sorted((scorer.score(name) for name in names), key=lambda c: c.delta_bic)
 
 
-def _significant(cands: list[Candidate], missed_blocks: set, ratio: float = RATIO_EFFECT) -> list[Candidate]:
+def reaches(c: Candidate, base_rms: dict[str, float], accuracy: dict[str, float]) -> bool:
+    """Whether the candidate's form moves every block in which the base leaves structure (held-out half). A form
+    that cannot move a block at all (a linear extension and the displacement's harmonics: the level stays exactly
+    where the base put it) cannot be the cause of that block's misfit, however much it gains on the others."""
+    if c.held is None:
+        return True
+    rms = block_rms(c.held)
+    for k, r0 in base_rms.items():
+        if k in UNGAINABLE or r0 <= STRUCTURE_MARGIN * accuracy.get(k, 1.0) or k not in rms:
+            continue
+        if abs(rms[k] - r0) <= REACH_TOL * r0:
+            return False
+    return True
+
+
+def _significant(cands: list[Candidate], missed_blocks: set, ratio: float = RATIO_EFFECT,
+                 base_rms: dict[str, float] | None = None, accuracy: dict[str, float] | None = None) -> list[Candidate]:
     """Significant on the fitted half, ranked by how well they predict the held-out half: an extension
     flexible enough to soak up any residual on the fitted records does not carry over to other pressures. A cause
-    of the current (``CURRENT_CAUSES``) needs a current block among those the base misses (``missed_blocks``)."""
+    of the current (``CURRENT_CAUSES``) needs a current block among those the base misses (``missed_blocks``).
+    Those that reach every block the base leaves structured (``reaches``) rank first: the signature before the
+    score, as for the current."""
     current_seen = bool(set(missed_blocks) & CURRENT_BLOCKS)
     ok = (c for c in cands if c.delta_bic < DBIC_EFFECT and c.heldout_ratio < ratio and c.ratio_vs_reference < ratio
           and (current_seen or c.name not in CURRENT_CAUSES))
-    return sorted(ok, key=lambda c: c.heldout_ratio)
+    if base_rms is None:
+        return sorted(ok, key=lambda c: c.heldout_ratio)
+    return sorted(ok, key=lambda c: (not reaches(c, base_rms, accuracy or CLEAN_ACCURACY), c.heldout_ratio))
 
 
 def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, Context]:
@@ -404,7 +433,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     where = missed(held_rms, accuracy)
     base_heldout = heldout_error(held_rms, where, accuracy)
     cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, b_held, refit_mechanics=True)
-    named = _significant(cands, where)
+    named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain
     accepted = list(named[:1])
@@ -420,7 +449,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         # the mechanics were refitted in the first round (with the first effect, or not at all): later effects
         # are judged on those, which keeps a second round to the extensions' own parameters
         rest = _significant(_score(cf, ch, [c.name for c in cands if c.name not in {a.name for a in accepted}], c1, n, h1),
-                            missed(block_rms(h1), accuracy), RATIO_FURTHER)
+                            missed(block_rms(h1), accuracy), RATIO_FURTHER, block_rms(h1), accuracy)
         if not rest:
             break
         accepted.append(rest[0])
@@ -436,7 +465,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     elif named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0
-        confidence = float(min(1.0, (second - named[0].heldout_ratio) / max(1.0 - named[0].heldout_ratio, 1e-9)))
+        confidence = float(min(1.0, max(0.0, second - named[0].heldout_ratio) / max(1.0 - named[0].heldout_ratio, 1e-9)))
     elif structure:
         # structure no catalogued extension removes: confidence grows with how far the worst block sits beyond
         verdict, cause = "unexplained", None

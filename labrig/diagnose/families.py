@@ -62,20 +62,28 @@ def _pair(s, th):
 # ------------------------------------------------------------------------------------------ faradaic branches
 
 
-def _branch(fun, lagged: bool = False):
+def _branch(fun, lagged: bool = False, transport: bool = False):
     """A parallel current branch i_b = fun(v, theta, dv/dt): harmonics 1-3 of each sine over one period of the
     measured drive's fundamental (numerically: any form), the step's current at the record's own rate (a charge
     drawn at the edge lands in the block it was drawn in), then block-averaged as the step is compared. ``lagged``:
     the branch sees the interface's potential, the drive through the double layer's charging, 1/(1 + s tau) with
-    tau the last parameter (a Randles cell: the faradaic branch sits behind R_s, beside C_dl)."""
+    tau the last parameter (a Randles cell: the faradaic branch sits behind R_s, beside C_dl). ``transport``: the
+    law's current passes through the diffusion layer's admittance (``diffusion_admittance``), its (tau_D, kappa)
+    the two parameters before tau."""
 
     def apply(th, ctx: Context):
         law_th, tau = (th[:-1], th[-1]) if lagged else (th, 0.0)
+        Y = None
+        if transport:
+            law_th, (tau_d, kap) = law_th[:-2], law_th[-2:]
+            Y = lambda z: diffusion_admittance(z, tau_d, kap)  # noqa: E731
         p = baseline(ctx)
         for k, s in enumerate(ctx.sines):
             a = _drive(s)
             ph = a / (1 + 2j * np.pi * s.f * tau) * np.exp(1j * _TH)
             c = np.fft.fft(fun(ph.real, law_th, (2j * np.pi * s.f * ph).real))[1:4] * 2 / _N
+            if Y is not None:
+                c = c * Y(2j * np.pi * s.f * np.arange(1, 4))
             x = np.array([p.Hi[k] * a, p.hi[k, 0] * p.Hi[k] * a, p.hi[k, 1] * p.Hi[k] * a]) + c
             p.Hi[k], p.hi[k] = x[0] / a, x[1:] / x[0]
         for k, st in enumerate(ctx.steps):
@@ -83,10 +91,32 @@ def _branch(fun, lagged: bool = False):
             if tau > 0 and v.size > 1:
                 v = lfilter([-np.expm1(-1 / (st.fs_full * tau))], [1, -np.exp(-1 / (st.fs_full * tau))], v - v[0]) + v[0]
             dv = np.gradient(v) * st.fs_full if v.size > 1 else np.zeros_like(v)
-            p.step_i[k] = p.step_i[k] + st.decimate(fun(v, law_th, dv))
+            i_b = st.decimate(fun(v, law_th, dv))
+            if Y is not None and i_b.size > 1:
+                i_b = timeresp.simulate(Y, i_b, st.fs_full / st.q)  # at the compared rate: Y is biproper, fast
+            p.step_i[k] = p.step_i[k] + i_b
         return p
 
     return apply
+
+
+def diffusion_admittance(s, tau_d: float, kappa: float):
+    """A faradaic current's transport through a Nernst layer of finite thickness, normalised to 1 at DC (the steady
+    wave): the finite Warburg W = sqrt(tau_D s) coth(sqrt(tau_D s)) (W(0) = 1, W ~ sqrt(tau_D s) fast: Cottrell's
+    1/sqrt(t) spike after a potential step) in series with a charge transfer kappa times faster than the transport
+    (a Randles cell), Y = W (1 + 1/kappa)/(1 + W/kappa): the edges draw up to 1 + kappa times the steady current."""
+    q = np.sqrt(tau_d * np.asarray(s, complex))
+    small = np.abs(q) < 1e-4
+    W = np.where(small, 1.0 + q**2 / 3, q / np.tanh(np.where(small, 1.0, q)))
+    return W * (1 + 1 / kappa) / (1 + W / kappa)
+
+
+def _wave(v, th, dv=None):
+    """A transport-limited faradaic wave on both electrodes, i_lim (tanh((v - E0)/2w) + tanh((v + E0)/2w))/2: a redox
+    couple at 0 V (E0 = 0: Nernstian on both surfaces, i_lim tanh(v/2w)) or a reduction with its half-wave at E0 on
+    whichever electrode is the cathode (oxygen: the Koutecky-Levich sigmoid k/(1 + k), k = exp((v - E0)/b), w = b)."""
+    i_lim, e0, w = th
+    return i_lim * 0.5 * (np.tanh((v - e0) / (2 * w)) + np.tanh((v + e0) / (2 * w)))
 
 
 def _poly3(v, th, dv=None):
@@ -133,10 +163,34 @@ def _play_output(th, ctx: Context):
     return p
 
 
+def _pi_output(th, ctx: Context):
+    """Memory in the displacement path as a Prandtl-Ishlinskii operator: y = g ((1 - w) d + w P[d]), P the mean of
+    plays of half-widths r_max (k + 1/2)/4 on the tip's displacement. Dry friction in the bending stiffness
+    (elasto-slide elements in parallel with EI, the Maxwell-slip / Iwan model: d = x + sum k_i S_ri[x]) is the
+    inverse of a PI operator of stops, itself a PI operator of plays: the strip stiffer while its elements stick
+    (small motions), the linear gain once they slide, with loops between. w < 0: the opposite (softening)."""
+    w, r_um, gain = th
+    radii = r_um * 1e-6 * (np.arange(4) + 0.5) / 4
+    p = baseline(ctx)
+    if ctx.sines:
+        y = p.Hd * np.array([_drive(s) for s in ctx.sines])
+        a = np.abs(y)
+        n1, n3 = (np.mean(x, axis=0) for x in zip(*(_play_df(a, r) for r in radii)))
+        g1 = (1 - w) + w * n1
+        p.hd[:, 1] = p.hd[:, 1] + w * n3 / g1 * (y / a) ** 2
+        p.Hd = p.Hd * g1 * gain
+    for k, d in enumerate(p.step_d):
+        p.step_d[k] = gain * ((1 - w) * d + w * np.mean([_play(d, r) for r in radii], axis=0))
+    return p
+
+
 def _pi_drive(th, ctx: Context):
     """Memory of the electromechanical coupling as a Prandtl-Ishlinskii operator: plays of half-widths r_max (k +
     1/2)/4, k = 0..3, weighed alike (a density of coercivities, as a Preisach density's projection: loops that round
-    off instead of the single play's corners)."""
+    off instead of the single play's corners). The weight is signed: (1 - w) v + w P[v] with w < 0 is, up to the
+    gain, v - h P[v] = (1 - h) v + h S[v], S = v - P[v] the stop operators of the same radii (hysterons that
+    saturate: a domain follows the drive until it is full), h = |w|/(1 + |w|). Plays lower the gain at small drive,
+    stops at large drive; both loop and leave a remanence (the generalised PI operator, docs/diagnosis.md)."""
     w, r_max, gain = th
     return played_drive(w, r_max * (np.arange(4) + 0.5) / 4, gain, ctx)
 
@@ -278,6 +332,28 @@ def _two_arm_creep(x, sh):
     return w * -np.expm1(-x) + (1.0 - w) * -np.expm1(-x / ratio)
 
 
+def _norton(th, ctx: Context):
+    """Power-law (Norton) creep of the polymer under the pads at a fixed jaw gap: the creep rate goes as the stress to
+    the n, d sigma/dt = -E A sigma^n, so sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)) with tau_p = tau (p/p_top)^(1 - n):
+    the top pressure relaxes with tau, lower ones (p/p_top)^(n - 1) times slower (n -> 1: the exponential, alike at
+    every pressure). A share r of the force relaxes this way (the rest is carried elastically)."""
+    loss, tau, b_kt, b_gain, n = th
+    p = baseline(ctx)
+    ps = ctx.feats.pressures()
+    top = max(ps) if ps else 1.0
+    rel_p = np.array([(s.pressure_kPa or top) / top for s in ctx.sines], float)
+    p.force_rel[:] = -loss * (1.0 - norton_relaxed(creep_since_first_record(ctx) / tau, rel_p, n))
+    follow_force(p, ctx, b_kt, b_gain)
+    return p
+
+
+def norton_relaxed(x: np.ndarray, rel_p: np.ndarray, n: float) -> np.ndarray:
+    """sigma/sigma0 of Norton creep at a fixed strain after time x (in tau at the top pressure) for a pressure rel_p
+    of the top: (1 + (n - 1) x rel_p^(n - 1))^(-1/(n - 1))."""
+    m = max(n - 1.0, 1e-6)
+    return np.exp(-np.log1p(m * x * rel_p**m) / m)
+
+
 # ------------------------------------------------------------------------------------------ smooth memory, sensor side
 
 
@@ -354,10 +430,19 @@ FAMILIES["faradaic_current"] += [
           (2e-4, 2e-4, 0.4, 0.06, 1e-4, 0.2, 0.03), (0.0, 0.0, 0.05, 0.01, -0.05, 0.03, 0.0), (0.05, 0.05, 1.5, 0.3, 0.05, 1.0, 0.5),
           _branch(_adsorption, lagged=True),
           "Langmuir adsorption peaks C(v) dv/dt at +-E0 and the evolution's exponential tail on one side, at the interface's potential"),
+    _form("faradaic_current", "transport", ("i_lim_A", "e_half_V", "wave_V", "diffusion_tau_s", "kinetic_ratio", "interface_tau_s"),
+          (1e-4, 0.0, 0.07, 3.0, 3.0, 0.05), (0.0, 0.0, 0.01, 0.05, 0.1, 0.0), (0.02, 1.5, 0.5, 100.0, 50.0, 0.5),
+          _branch(_wave, lagged=True, transport=True),
+          "a transport-limited wave (a redox couple at 0 V, or a reduction at +-E_half) through the Nernst layer's finite "
+          "diffusion and the charge transfer: Cottrell spikes at the edges, a steady wave after"),
 ]
 FAMILIES["hysteresis"] += [
-    _form("hysteresis", "pi_drive", ("weight", "play_max_V", "gain"), (0.3, 0.3, 1.0), (0.0, 1e-3, 0.2), (1.0, 1.5, 5.0), _pi_drive,
-          "Prandtl-Ishlinskii operator on the drive, plays of half-widths spread evenly up to r_max (smooth loops, a remanent bend)"),
+    _form("hysteresis", "pi_drive", ("weight", "play_max_V", "gain"), (0.3, 0.3, 1.0), (-1.0, 1e-3, 0.2), (1.0, 1.5, 5.0), _pi_drive,
+          "Prandtl-Ishlinskii operator on the drive, plays (weight > 0) or stops (weight < 0) of half-widths spread evenly "
+          "up to r_max: smooth loops and a remanent bend, the gain rising or falling with the drive"),
+    _form("hysteresis", "pi_output", ("weight", "play_max_um", "gain"), (0.3, 100.0, 1.0), (-1.0, 0.1, 0.2), (1.0, 5000.0, 5.0),
+          _pi_output, "Prandtl-Ishlinskii operator in the displacement path: dry friction in the bending stiffness "
+          "(Maxwell-slip elements), stiffer for small motions, loops and a remanent bend"),
     # the baseline's mechanics took in the gain and phase the play costs at each pressure's amplitudes: refitted with it
     _form("hysteresis", "play_output", ("weight", "play_um"), (0.3, 50.0), (0.0, 0.1), (1.0, 5000.0), _play_output,
           "play operator in the displacement path, y = (1 - w) d + w play_r(d): memory on the sensor side"),
@@ -385,6 +470,10 @@ FAMILIES["clamp_relaxation"] += [
     _form("clamp_relaxation", "two_arm", (*_CREEP, "slow_ratio", "fast_share"), (0.05, 60.0, 1.0, 0.0, 20.0, 0.5),
           (-0.2, 5.0, -10.0, -10.0, 3.0, 0.0), (0.6, 1e4, 10.0, 10.0, 300.0, 1.0), _creep(_two_arm_creep),
           "clamp force relaxing in two arms, F = F0 (1 - r (w (1 - e^-t/tau) + (1 - w)(1 - e^-t/(k tau)))); K_t bar and gain follow it"),
+    _form("clamp_relaxation", "norton", (*_CREEP, "norton_n"), (0.3, 600.0, 1.0, 0.0, 3.0), (-0.2, 5.0, -10.0, -10.0, 1.05),
+          (1.0, 1e5, 10.0, 10.0, 8.0), _norton,
+          "power-law (Norton) creep, sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)), tau_p = tau (p/p_top)^(1 - n): the high "
+          "pressures relax most and first; K_t bar and gain follow it"),
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),

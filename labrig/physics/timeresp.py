@@ -48,23 +48,37 @@ def _grid_values(tfs: Sequence[TransferFunction], s_bins: np.ndarray) -> list[np
     return out
 
 
+def transfer_grid(tfs: Sequence[TransferFunction], n: int, fs: float, pad: float = 1.0) -> tuple[int, float, list[np.ndarray]]:
+    """(nfft, sigma, each H on the grid) for drives of n samples at fs: what ``respond`` needs, computed once for
+    any number of drives of that length (a fit that changes only the drive reuses it)."""
+    nfft = sfft.next_fast_len(int(n * (1.0 + pad)) + 16, real=True)
+    sigma = _DAMPING / (nfft / fs)
+    s_bins = sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
+    return nfft, sigma, _grid_values(tfs, s_bins)
+
+
+def respond(u: np.ndarray, fs: float, grid: tuple[int, float, list[np.ndarray]]) -> list[np.ndarray]:
+    """Responses to the drive u (at rest at t = 0) of the transfer functions on ``grid`` (``transfer_grid``)."""
+    u = np.asarray(u, float)
+    n = u.size
+    nfft, sigma, Hs = grid
+    if n == 0:
+        return [np.zeros(0) for _ in Hs]
+    t = np.arange(n) / fs
+    U = sfft.rfft(u * np.exp(-sigma * t), nfft)
+    grow = np.exp(sigma * t)
+    return [sfft.irfft(U * H, nfft)[:n] * grow for H in Hs]
+
+
 def simulate_many(tfs: Sequence[TransferFunction], u: np.ndarray, fs: float, pad: float = 1.0) -> list[np.ndarray]:
     """Responses of several transfer functions to the same drive ``u`` sampled at ``fs`` (system at rest at t=0).
 
     ``pad``: zero padding as a fraction of the record (1.0 doubles it) so the response's own tail has room.
     """
     u = np.asarray(u, float)
-    n = u.size
-    if n == 0:
+    if u.size == 0:
         return [np.zeros(0) for _ in tfs]
-    nfft = sfft.next_fast_len(int(n * (1.0 + pad)) + 16, real=True)
-    T = nfft / fs
-    sigma = _DAMPING / T
-    t = np.arange(n) / fs
-    U = sfft.rfft(u * np.exp(-sigma * t), nfft)
-    s_bins = sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
-    grow = np.exp(sigma * t)
-    return [sfft.irfft(U * H, nfft)[:n] * grow for H in _grid_values(tfs, s_bins)]
+    return respond(u, fs, transfer_grid(tfs, u.size, fs, pad))
 
 
 def simulate(tf: TransferFunction, u: np.ndarray, fs: float, pad: float = 1.0) -> np.ndarray:
