@@ -105,10 +105,10 @@ def validation(a, name: str = "validation") -> list:
     sys.path.insert(0, str(REPO / "bench"))
     import inject
 
-    runner = inject  # whose run_all: its workers must import the module that registers the set's forms
+    registers = None  # the module the pool's workers must import: it registers the set's forms, bases and variants
     if name in ("fresh2", "fresh3", "fresh4"):
-        runner = importlib.import_module(f"inject_{name}")  # registers its forms, bases and variants in inject
-        todo = getattr(runner, f"{name}_cases")()
+        registers = f"inject_{name}"
+        todo = getattr(importlib.import_module(registers), f"{name}_cases")()
     else:
         todo = inject.fresh_cases() if name == "fresh" else inject.cases(extra=a.extra, full=a.full)
     t0 = time.perf_counter()
@@ -124,7 +124,7 @@ def validation(a, name: str = "validation") -> list:
                 results.append((CaseResult(c.truth, c.seed, d["verdict"], d["cause"], list(d["effects"]), float(d["gain"]["heldout_nrmse_ratio"]),
                                            float(d["gain"]["delta_bic"]), float(d.get("elapsed_s", float("nan"))), d, str(path)), c))
     else:
-        results = runner.run_all(folder, todo, a.jobs, a.reuse)
+        results = inject.run_all(folder, todo, a.jobs, a.reuse, registers)
     print(f"== {LABELS[name]}: {len(results)} of {len(todo)} injected and imported sessions, {a.jobs} at a time: {time.perf_counter() - t0:.0f} s")
     inject.report(results)
     return [r for r, _ in results]

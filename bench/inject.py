@@ -47,25 +47,25 @@ BASES = {  # clean sessions the validation set is written into: (protocol, prese
 }
 
 
-def register_presets() -> None:
-    """``paper_long``: the paper's strip with a 40 mm free length (its first resonance 0.56x lower). Registered in
-    every process that runs or reads it (the simulated bench and the sensor-offset forms look presets up by name)."""
+def register_free_length(name: str, length_m: float) -> None:
+    """The paper's strip with another free length, as preset ``name``. Registered in every process that runs or
+    reads it (the simulated bench and the sensor-offset forms look presets up by name)."""
     from dataclasses import replace
 
     from labrig.physics import presets
 
-    def long() -> presets.Preset:
+    def strip() -> presets.Preset:
         p = presets.get("paper")
-        base = replace(p.base, geometry=replace(p.base.geometry, length=0.040))
-        return replace(p, name="paper_long", base=base, description="the paper's strip, 40 mm free")
+        base = replace(p.base, geometry=replace(p.base.geometry, length=length_m))
+        return replace(p, name=name, base=base, description=f"the paper's strip, {length_m * 1e3:g} mm free")
 
-    def short() -> presets.Preset:
-        p = presets.get("paper")
-        base = replace(p.base, geometry=replace(p.base.geometry, length=0.025))
-        return replace(p, name="paper_short", base=base, description="the paper's strip, 25 mm free")
+    presets._PRESETS.setdefault(name, strip)
 
-    presets._PRESETS.setdefault("paper_long", long)
-    presets._PRESETS.setdefault("paper_short", short)
+
+def register_presets() -> None:
+    """``paper_long``: 40 mm free (its first resonance 0.56x lower); ``paper_short``: 25 mm free."""
+    register_free_length("paper_long", 0.040)
+    register_free_length("paper_short", 0.025)
 
 
 register_presets()

@@ -17,7 +17,6 @@ Run: python bench/inject_fresh2.py --make-only [--jobs 1] [--cache .cache/valida
 from __future__ import annotations
 
 import math
-from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -510,11 +509,6 @@ CLEAN = [(41, P41, "asrun"), (41, P41, "own_clock"), (42, S42, "asrun"), (42, S4
 def fresh2_cases(only: str | None = None) -> list[Case]:
     """The third held-out set: 30 effect cases, 5 outside the catalogue, 6 clean (seeds 41-43)."""
     return inject.plan_cases(PLAN, CLEAN, only)
-
-
-def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False) -> list:
-    """inject.run_all with workers that import this module (so its forms, bases and variants are known)."""
-    return inject.run_all(cache, todo, jobs, reuse, registers="inject_fresh2")
 
 
 if __name__ == "__main__":

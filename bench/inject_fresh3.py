@@ -18,7 +18,6 @@ Run: python bench/inject_fresh3.py --make-only [--jobs 1] [--cache .cache/valida
 from __future__ import annotations
 
 import math
-from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -31,16 +30,7 @@ from inject_fresh2 import _chrono, _drive_side, _map_through, _spec
 def register_presets() -> None:
     """``paper_35``: the paper's strip with a 35 mm free length (a free length no earlier set used: 30, 40, 25 mm).
     Registered in every process that imports this module (the simulated bench and the beam forms look it up)."""
-    from dataclasses import replace
-
-    from labrig.physics import presets
-
-    def p35() -> presets.Preset:
-        p = presets.get("paper")
-        base = replace(p.base, geometry=replace(p.base.geometry, length=0.035))
-        return replace(p, name="paper_35", base=base, description="the paper's strip, 35 mm free")
-
-    presets._PRESETS.setdefault("paper_35", p35)
+    inject.register_free_length("paper_35", 0.035)
 
 
 register_presets()
@@ -712,11 +702,6 @@ CLEAN = [(51, P51, "asrun"), (51, P51, "rate07"), (52, S52, "asrun"), (52, S52, 
 def fresh3_cases(only: str | None = None) -> list[Case]:
     """The fourth held-out set: 30 effect cases, 5 outside the catalogue, 6 clean (seeds 51-53)."""
     return inject.plan_cases(PLAN, CLEAN, only)
-
-
-def run_all(cache: Path, todo: list[Case], jobs: int = 2, reuse: bool = False) -> list:
-    """inject.run_all with workers that import this module (so its forms, bases and variants are known)."""
-    return inject.run_all(cache, todo, jobs, reuse, registers="inject_fresh3")
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ singularities, this is exact for any causal H, including the fractional CPE (s^n
 wrapped part is damped by exp(-sigma T_fft) = 1e-9.
 
 The drive samples are read as a band-limited signal, so a record analysed back by DFT at its own bins
-returns H(j omega) exactly (tests/test_physics_timeresp.py). H is evaluated exactly on the lowest bins and
+returns H(j omega) exactly (tests/test_physics_transfer.py). H is evaluated exactly on the lowest bins and
 on a logarithmic grid above, interpolated with a cubic spline (error < 1e-7 relative), which keeps 600 s
 at 1 kHz under a second.
 """
