@@ -280,3 +280,18 @@ def test_a_cause_must_reach_every_structured_block():
 
     assert ranked(10.0) == ["hysteresis", "back_relaxation"]
     assert ranked(1.0) == ["back_relaxation", "hysteresis"]
+
+
+def test_the_signature_reorders_only_candidates_of_the_same_order():
+    """A linear form that leaves the structured harmonics but predicts the held-out half many times better than the
+    form that reaches them stays first (REACH_FACTOR): the harmonics are then what it leaves, not the cause."""
+    import numpy as np
+
+    from labrig.diagnose.engine import CLEAN_ACCURACY, REACH_FACTOR, Candidate, _significant
+
+    base = {"frf_d": 3.0, "harm_d": 10.0}
+    held = lambda harm: {"frf_d": (np.full(10, 0.5), None), "harm_d": (np.full(10, harm), None)}  # noqa: E731
+    linear = Candidate("back_relaxation", {}, -5000.0, 1.0, 0.03, 0.0, 0.03, held=held(10.0))
+    memory = Candidate("hysteresis", {}, -5000.0, 1.0, 0.03 * REACH_FACTOR * 1.5, 0.0, 0.1, held=held(5.0))
+    assert [c.name for c in _significant([memory, linear], {"frf_d", "harm_d"}, base_rms=base, accuracy=CLEAN_ACCURACY)] == \
+        ["back_relaxation", "hysteresis"]

@@ -127,3 +127,24 @@ def test_a_sine_blocks_noise_level_is_what_its_noise_alone_reaches():
         h = np.array([[s.harm(which, 2), s.harm(which, 3)] for s in sines]) / engine._harm_sigma(rel)[:, None]
         actual = float(np.sqrt(np.mean(np.r_[h.real.ravel(), h.imag.ravel()] ** 2)))
         assert abs(levels["harm_" + which] / actual - 1) < 0.3, ("harm_" + which, levels["harm_" + which], actual)
+
+
+def test_samples_lost_in_packets_are_put_back_on_the_records_grid():
+    """A USB DAQ's overruns drop whole packets while the rows kept carry their true stamps: the record comes back on
+    a uniform grid at its median spacing, the lost samples interpolated (a ramp stays exact), and a record on a
+    jittered clock (no spacing near 1.5x the median) or without gaps comes back untouched."""
+    import numpy as np
+
+    from labrig.estimate.session_data import regular_grid
+
+    t = np.arange(2000) / 1000.0
+    keep = np.ones(t.size, bool)
+    keep[300:364] = keep[1200:1328] = False  # two packets of 64 and 128 samples
+    ramp = 3.0 * t + 1.0
+    filled, gaps, tt, (r,) = regular_grid(t[keep], ramp[keep])
+    assert (filled, gaps) == (192, 2) and tt.size == t.size
+    np.testing.assert_allclose(tt, t, atol=1e-12)
+    np.testing.assert_allclose(r, ramp, rtol=1e-12)
+    jitter = t + np.random.default_rng(3).uniform(-2e-4, 2e-4, t.size)
+    filled, gaps, tj, (rj,) = regular_grid(jitter, ramp)
+    assert (filled, gaps) == (0, 0) and tj is jitter and rj is ramp

@@ -168,7 +168,8 @@ def _line(t: np.ndarray, x: np.ndarray, fs: float, f_line: float) -> tuple[float
         return 0.0, float("inf")
     n = t.size
     w = np.hanning(n)
-    spec = np.abs(np.fft.rfft((x - np.polyval(np.polyfit(t, x, 3), t)) * w)) * 2 / w.sum()
+    u = (t - t[0]) / max(float(t[-1] - t[0]), 1e-12) - 0.5  # on [-0.5, 0.5]: a cubic in absolute seconds is ill-conditioned
+    spec = np.abs(np.fft.rfft((x - np.polyval(np.polyfit(u, x, 3), u)) * w)) * 2 / w.sum()
     freqs = np.fft.rfftfreq(n, 1.0 / fs)
     k = int(np.argmin(np.abs(freqs - f_line)))
     lo, hi = max(k - 40, 1), min(k + 40, spec.size)

@@ -191,6 +191,25 @@ def _finite(*arrays: np.ndarray) -> bool:
     return all(a.size > 0 and np.all(np.isfinite(a)) for a in arrays)
 
 
+GAP = 1.5  # a spacing this many times the median is samples lost (a jittered clock stays well under it)
+
+
+def regular_grid(t: np.ndarray, *cols: np.ndarray) -> tuple[int, int, np.ndarray, list[np.ndarray]]:
+    """(samples filled, gaps, t, cols) on a uniform grid at the median spacing: a DAQ whose buffer overran loses whole
+    packets while the rows kept carry their true time stamps. Every estimate downstream (the step simulated at the
+    record's rate, block means, spectra) reads samples as evenly spaced; across a gap the columns are interpolated
+    linearly (the samples are gone: nothing better is known). Records without gaps come back as they were."""
+    if t.size < 3:
+        return 0, 0, t, list(cols)
+    dt = float(np.median(np.diff(t)))
+    gaps = int(np.sum(np.diff(t) > GAP * dt))
+    if dt <= 0 or not gaps:
+        return 0, 0, t, list(cols)
+    n = int(round((t[-1] - t[0]) / dt)) + 1
+    grid = t[0] + np.arange(n) * dt
+    return n - t.size, gaps, grid, [np.interp(grid, t, c) for c in cols]
+
+
 def load_session(path: str | Path) -> SessionData:
     from labrig.store import SessionReader
 
@@ -228,6 +247,11 @@ def load_session(path: str | Path) -> SessionData:
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
+            filled = 0
+            if st.kind not in SINE_KINDS:  # a sine is demodulated at its samples' own times: gaps cost it nothing
+                filled, gaps, rec.t, (rec.v, rec.i, rec.d) = regular_grid(rec.t, rec.v, rec.i, rec.d)
+            if filled:
+                notes.append(f"step {st.name}: {filled} samples missing in {gaps} gaps of its time stamps, interpolated")
             if bucket is None:
                 loose.append(rec)
                 continue
