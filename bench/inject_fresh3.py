@@ -27,13 +27,8 @@ from inject import Case, Rec, Session, _dry, lti, lu, map_disp, play, ref_disp
 from inject_fresh2 import _chrono, _drive_side, _map_through, _spec
 
 
-def register_presets() -> None:
-    """``paper_35``: the paper's strip with a 35 mm free length (a free length no earlier set used: 30, 40, 25 mm).
-    Registered in every process that imports this module (the simulated bench and the beam forms look it up)."""
-    inject.register_free_length("paper_35", 0.035)
-
-
-register_presets()
+# the paper's strip 35 mm free (a free length no earlier set used: 30, 40, 25 mm): registered in every process that imports this module
+inject.register_free_length("paper_35", 0.035)
 
 inject.BASES.update({
     "paper_51": ("paper-sweep", "paper", 51),

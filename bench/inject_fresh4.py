@@ -30,13 +30,8 @@ from inject_fresh2 import _chrono, _drive_side, _map_through, _spec
 from inject_fresh3 import _past, _resist, _sign, _through_x
 
 
-def register_presets() -> None:
-    """``paper_20``: the paper's strip with a 20 mm free length (earlier sets used 30, 40, 25 and 35 mm).
-    Registered in every process that imports this module (the simulated bench and the beam forms look it up)."""
-    inject.register_free_length("paper_20", 0.02)
-
-
-register_presets()
+# the paper's strip 20 mm free (earlier sets used 30, 40, 25 and 35 mm): registered in every process that imports this module
+inject.register_free_length("paper_20", 0.02)
 
 inject.BASES.update({
     "paper_61": ("paper-sweep", "paper", 61),
