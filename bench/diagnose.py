@@ -17,7 +17,7 @@
   35 mm strips), diagnosed once with the fourth pass's final code; its misses were seen and acted on in the fifth.
 * Fresh4 held-out set (``--set fresh4``, bench/inject_fresh4.py ``fresh4_cases``): two more forms per effect and
   three more outside structures (three cases each) by an author who had not seen the diagnosis, seeds 61-63 (paper,
-  seed-001, 20 mm strips) and a new data shape (dropped DAQ packets), diagnosed once with the fifth pass's final code.
+  seed-001, 20 mm strips) and a new data shape (dropped DAQ packets), diagnosed once unseen (f5aa88a), seen since.
 
 Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
@@ -98,7 +98,7 @@ def tuning(a) -> list:
 
 LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fresh held-out set (unseen)",
           "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (seen in the fifth pass)",
-          "fresh4": "fresh4 held-out set (unseen)"}
+          "fresh4": "fresh4 held-out set (diagnosed once unseen at f5aa88a; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
