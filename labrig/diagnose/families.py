@@ -149,18 +149,7 @@ def _play_output(th, ctx: Context):
     """Play operator of half-width r on the displacement itself (memory in the sensor path, not the drive):
     y = (1 - w) d + w play_r(d); describing function at each sine's output amplitude."""
     w, r_um = th
-    r = r_um * 1e-6
-    p = baseline(ctx)
-    if ctx.sines:
-        y = p.Hd * np.array([_drive(s) for s in ctx.sines])
-        a = np.abs(y)
-        n1, n3 = _play_df(a, r)
-        g1 = (1 - w) + w * n1
-        p.hd[:, 1] = p.hd[:, 1] + w * n3 / g1 * (y / a) ** 2
-        p.Hd = p.Hd * g1
-    for k, d in enumerate(p.step_d):
-        p.step_d[k] = (1 - w) * d + w * _play(d, r)
-    return p
+    return played_output(w, [r_um * 1e-6], 1.0, ctx)
 
 
 def _pi_output(th, ctx: Context):
@@ -170,7 +159,13 @@ def _pi_output(th, ctx: Context):
     inverse of a PI operator of stops, itself a PI operator of plays: the strip stiffer while its elements stick
     (small motions), the linear gain once they slide, with loops between. w < 0: the opposite (softening)."""
     w, r_um, gain = th
-    radii = r_um * 1e-6 * (np.arange(4) + 0.5) / 4
+    return played_output(w, _pi_radii(r_um * 1e-6), gain, ctx)
+
+
+def played_output(w: float, radii, gain: float, ctx: Context):
+    """The displacement read through g ((1 - w) d + w P[d]), P the mean of plays of the given half-widths (m) on it
+    (``catalogue.played_drive``'s counterpart in the sensor path): sines by describing function at each sine's output
+    amplitude, the step's prediction played as it stands."""
     p = baseline(ctx)
     if ctx.sines:
         y = p.Hd * np.array([_drive(s) for s in ctx.sines])
@@ -184,6 +179,11 @@ def _pi_output(th, ctx: Context):
     return p
 
 
+def _pi_radii(r_max: float) -> np.ndarray:
+    """The PI forms' four plays: half-widths r_max (k + 1/2)/4, k = 0..3, weighed alike."""
+    return r_max * (np.arange(4) + 0.5) / 4
+
+
 def _pi_drive(th, ctx: Context):
     """Memory of the electromechanical coupling as a Prandtl-Ishlinskii operator: plays of half-widths r_max (k +
     1/2)/4, k = 0..3, weighed alike (a density of coercivities, as a Preisach density's projection: loops that round
@@ -192,7 +192,7 @@ def _pi_drive(th, ctx: Context):
     saturate: a domain follows the drive until it is full), h = |w|/(1 + |w|). Plays lower the gain at small drive,
     stops at large drive; both loop and leave a remanence (the generalised PI operator, docs/diagnosis.md)."""
     w, r_max, gain = th
-    return played_drive(w, r_max * (np.arange(4) + 0.5) / 4, gain, ctx)
+    return played_drive(w, _pi_radii(r_max), gain, ctx)
 
 
 # ------------------------------------------------------------------------------------------ strain as a gain loss
