@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
+from labrig.diagnose.artefacts import MIN_RECORDS as MIN_ARTEFACT_RECORDS, artefacts, detail as artefact_detail
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
@@ -57,8 +58,9 @@ RATIO_FURTHER = 0.8
 # form happens to fit it (third pass: a form with a free current gain fitted 0 there). Not a threshold: a signature.
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
-# a block moved by no more than this share of its level is out of a form's reach (a linear form leaves the harmonics
-# exactly where they were: 0; the forms that can move them, by 2 % and more on the fresh3 set's friction cases)
+# a block lowered by no more than this share of its level is out of a form's reach (a linear form leaves the harmonics
+# exactly where they were: 0; the forms that can move them lower them by 2 % and more on the fresh3 set's friction
+# cases; raising a block is no reach: sixth pass, fresh3's pre-curved strip, where an odd memory raised the even harmonics)
 REACH_TOL = 0.01
 # ... and the signature reorders candidates only within this factor of the best held-out ratio. Set on two seen cases:
 # fresh3's stop operators (the PI with stops 0.246 against the relaxation pair's 0.206, which leaves the harmonics:
@@ -369,16 +371,18 @@ def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: 
 
 
 def reaches(c: Candidate, base_rms: dict[str, float], accuracy: dict[str, float]) -> bool:
-    """Whether the candidate's form moves every block in which the base leaves structure (held-out half). A form
-    that cannot move a block at all (a linear extension and the displacement's harmonics: the level stays exactly
-    where the base put it) cannot be the cause of that block's misfit, however much it gains on the others."""
+    """Whether the candidate's form moves every block in which the base leaves structure (held-out half) toward the
+    data: lowers its level by more than ``REACH_TOL``. A form that cannot move a block at all (a linear extension and
+    the displacement's harmonics: the level stays exactly where the base put it), or moves it only away (an odd
+    memory fitted where the harmonics are even: fresh3's pre-curved strip), cannot be the cause of that block's
+    misfit, however much it gains on the others."""
     if c.held is None:
         return True
     rms = block_rms(c.held)
     for k, r0 in base_rms.items():
         if k in UNGAINABLE or r0 <= STRUCTURE_MARGIN * accuracy.get(k, 1.0) or k not in rms:
             continue
-        if abs(rms[k] - r0) <= REACH_TOL * r0:
+        if rms[k] >= (1 - REACH_TOL) * r0:  # left where it was, or made worse: not moved toward the data
             return False
     return True
 
@@ -467,6 +471,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     dof_chi2 = c_all / max(n_all, 1)
     structure = structured(held_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
     clock = clock_offset(feats.sines, FRF_FLOOR)
+    recording = artefacts(sd)
     if clock["flagged"]:
         # the displacement is not periodic at the drive's frequency: whatever a catalogued extension gains on it,
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
@@ -480,6 +485,11 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         # structure no catalogued extension removes: confidence grows with how far the worst block sits beyond
         verdict, cause = "unexplained", None
         confidence = float(1.0 - STRUCTURE_MARGIN / max(structure.values()))
+    elif recording["flagged"]:
+        # the features are within their accuracy, but the time series carry what no catalogued cause makes (held or
+        # dropped readings, a foreign line): the recording is not the model's to explain (docs/diagnosis.md,
+        # "Recording artefacts"). A named effect stands: a catalogued cause and an artefact can both be present
+        verdict, cause, confidence = "unexplained", None, 1.0
     else:
         verdict, cause = "none", None
         worst = max((held_rms[k] / accuracy[k] for k in held_rms), default=0.0)
@@ -492,6 +502,10 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
+    if recording["flagged"]:
+        residual_where.insert(0, {"block": "recording", "level": float(recording["bursts"]["records"] + recording["lines"]["records"]),
+                                  "over_accuracy": float(max(recording["bursts"]["records"], recording["lines"]["records"]) / MIN_ARTEFACT_RECORDS),
+                                  "detail": artefact_detail(recording), "lines_Hz": recording["lines"]["frequencies_Hz"]})
     best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
     return {
         "verdict": verdict,
@@ -510,6 +524,7 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "clock": clock,
+        "recording": recording,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},

@@ -352,7 +352,7 @@ def _stack(columns: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> tuple[np
     return out[0], out[1], out[2]
 
 
-def _sine_skip(r: TimeRecord) -> float:
+def sine_skip(r: TimeRecord) -> float:
     """Cycles to skip for a rate of change: the settling cycles, at least one cycle of a harmonic record (its
     start transient would read as drift)."""
     return sine_cycles(r)[0] or (1.0 if r.kind == RecordKind.HARMONIC else 0.0)
@@ -385,11 +385,11 @@ def _sine_drift(records: list[TimeRecord]) -> dict[str, DriftEstimate | None]:
     for r in records:
         if r.kind in SINE_KINDS and "frequency_Hz" in r.meta:
             f = float(r.meta["frequency_Hz"])
-            within.append(sine_gain_rate(r.t, r.v, r.d, f, _sine_skip(r)))
+            within.append(sine_gain_rate(r.t, r.v, r.d, f, sine_skip(r)))
             groups.setdefault((r.kind, f, r.meta.get("amplitude_V")), []).append(r)
     repeats = []
     for recs in (g for g in groups.values() if len(g) > 1):
-        whole = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), _sine_skip(r), segments=1) for r in recs]
+        whole = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), sine_skip(r), segments=1) for r in recs]
         repeats.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm, g, var) for r, (tm, g, var) in zip(recs, whole)])))
     return {"sine/within": combine_rates(*(np.array(c) for c in zip(*within))) if within else None,
             "sine/repeats": gain_drift(*_stack(repeats)) if repeats else None}

@@ -1,0 +1,246 @@
+"""Recording artefacts no catalogued cause makes, read off the sine records' time series.
+
+Every catalogued effect acts through the strip, the electrodes or the sensor's calibration, so its response to a
+sine is periodic at the drive's frequency (harmonics, and a slow drift of their amplitudes), plus the mains' lines.
+Two things in a recording are neither, and no block of the diagnosis looks for them, because each leaves the
+demodulated features almost untouched:
+
+* **bursts**: the reading leaves its signal for a few samples and comes back, as a laser that holds its last value
+  while it has lost the spot, a reading clipped at the end of its range, a dropout to a sentinel value. After the
+  record's periodic part, its slow trend and its amplitude drift are removed, the residual is beyond ``BURST_Z``
+  robust standard deviations for ``BURST_RUN`` or more samples in a row, in ``MIN_RECORDS`` records or more.
+* **foreign lines**: a narrow line at a frequency that is neither a harmonic of the drive nor near the mains' (50
+  or 60 Hz and harmonics, their sidebands at the drive's harmonics), each taken with its alias at the record's
+  rate: a pump's or fan's vibration, a switching amplifier's ripple aliased into the band, a second instrument's
+  clock. A bin of the residual's Hann periodogram above ``LINE_POWER`` times its neighbours' mean power (their
+  median / ln 2), in ``MIN_RECORDS`` records or more.
+
+Neither threshold was set on a set of sessions: both are tails of the noise's own law. Gaussian noise exceeds 6
+sigma with probability 2e-9 per sample; a periodogram bin of noise exceeds 25 times its mean with probability
+e^-25 = 1.4e-11 (chi-square with two degrees of freedom), so a session of 10^7 samples and 10^6 bins has about
+1e-5 expected false alarms before the two-record rule. What they read on the clean sessions of every set is in
+docs/diagnosis.md ("Recording artefacts"). Only the sine records are read: their periodic part is known.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from scipy.ndimage import median_filter
+
+from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
+from labrig.records import SINE_KINDS
+
+BURST_Z = 6.0  # robust standard deviations
+BURST_RUN = 3  # samples in a row
+LINE_POWER = 25.0  # times the neighbouring bins' mean power
+MIN_RECORDS = 2  # an artefact of the recording recurs; one record's event may be a knock on the table
+HARMONICS = 10  # drive harmonics fitted before the residual is read (the catalogue's forms reach 3f; corners more)
+DRIFT_HARMONICS = 3  # of them, those whose amplitude may drift linearly through the record
+ALIAS_ORDERS = 60  # drive harmonics whose aliases are excluded from the line search
+GUARD_BINS = 5  # bins either side of an excluded frequency
+MAINS_GUARD_HZ = 2.0  # either side of a mains harmonic: a modulated mains line spreads by its modulation
+NEIGHBOURS = 30  # bins on each side for the local mean power
+LOBE = 2  # bins either side of a line that its Hann window spreads it over
+MERGE_REL = 0.01  # lines of several records this close (relative) are one line
+LOW_BINS = 8  # the lowest bins carry the trend's leakage
+SLOW_WINDOW_S = 1.0  # the running median's window: an excursion up to half this long stands out of it
+
+
+def _alias(f: np.ndarray, fs: float) -> np.ndarray:
+    """Where frequencies ``f`` appear in a record sampled at ``fs``: folded into [0, fs/2]."""
+    g = np.mod(f, fs)
+    return np.minimum(g, fs - g)
+
+
+def _segment(r: TimeRecord) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
+    """(t, d, i, f0) of a sine record's whole cycles after its settling cycles, centred in time; None if too short.
+    The sample that closes the last cycle is left out: the drive is switched there (the record's end, or the next)."""
+    f0 = float(r.meta.get("frequency_Hz") or 0.0)
+    if r.kind not in SINE_KINDS or not f0 > 0 or r.t.size < 64:
+        return None
+    start = r.t[0] + sine_skip(r) / f0
+    whole = math.floor((r.t[-1] - start) * f0 + 0.01)
+    dt = float(np.median(np.diff(r.t)))
+    keep = (r.t >= start - 0.5 * dt) & (r.t < start + whole / f0 - 0.5 * dt)
+    if whole < 1 or keep.sum() < 64 or not (np.all(np.isfinite(r.d[keep])) and np.all(np.isfinite(r.i[keep]))):
+        return None
+    t = r.t[keep] - float(np.mean(r.t[keep]))
+    return t, r.d[keep].astype(float), r.i[keep].astype(float), f0
+
+
+def _design(t: np.ndarray, f0: float, fs: float) -> np.ndarray:
+    """Trend (quadratic), drive harmonics below Nyquist, and a linear drift of the first few harmonics' amplitude."""
+    span = max(float(np.ptp(t)), 1e-12)
+    u = 2 * t / span
+    cols = [np.ones_like(t), u, u**2]
+    for k in range(1, HARMONICS + 1):
+        if k * f0 >= fs / 2:
+            break
+        c, s = np.cos(2 * np.pi * k * f0 * t), np.sin(2 * np.pi * k * f0 * t)
+        cols += [c, s] + ([u * c, u * s] if k <= DRIFT_HARMONICS else [])
+    return np.column_stack(cols)
+
+
+def _periodic_median(e: np.ndarray, t: np.ndarray, f0: float) -> np.ndarray:
+    """The residual's periodic part at every harmonic, as the median per phase bin (robust to the bursts sought)."""
+    cycles = float(np.ptp(t)) * f0
+    per_cycle = e.size / max(cycles, 1e-9)
+    if cycles < 3 or per_cycle < 8:
+        return np.zeros_like(e)
+    nb = int(min(256, per_cycle // 2))
+    b = np.minimum((np.mod(t * f0, 1.0) * nb).astype(int), nb - 1)
+    med = np.zeros(nb)
+    for j in range(nb):
+        v = e[b == j]
+        med[j] = np.median(v) if v.size else 0.0
+    return med[b]
+
+
+def _running_median(e: np.ndarray, t: np.ndarray, f0: float, periodic_removed: bool) -> np.ndarray:
+    """The residual's slow part (a start transient, a drift faster than the trend) as a running median: it follows
+    any monotonic stretch exactly and ignores an excursion shorter than half its window. The window is
+    ``SLOW_WINDOW_S``, and at most a quarter cycle while the periodic part is still in the residual."""
+    fs = 1.0 / float(np.median(np.diff(t)))
+    w = fs * SLOW_WINDOW_S if periodic_removed else min(fs * SLOW_WINDOW_S, fs / f0 / 4)
+    w = int(min(max(w, 9), e.size // 4)) | 1
+    return median_filter(e, size=w, mode="nearest") if w >= 9 else np.zeros_like(e)
+
+
+def _robust_sigma(e: np.ndarray) -> float:
+    return float(1.4826 * np.median(np.abs(e - np.median(e))))
+
+
+def _bursts(e: np.ndarray, quantum: float) -> tuple[int, int, float]:
+    """(runs, longest, worst z) of ``BURST_RUN`` or more consecutive samples beyond ``BURST_Z`` robust sigmas; the
+    worst z is the largest level that ``BURST_RUN`` samples in a row all exceed (the margin a clean record leaves)."""
+    sigma = max(_robust_sigma(e), quantum / math.sqrt(12.0), 1e-300)
+    z = np.abs(e - np.median(e)) / sigma
+    hot = np.concatenate([[False], z > BURST_Z, [False]]).astype(np.int8)
+    edges = np.flatnonzero(np.diff(hot))
+    lengths = edges[1::2] - edges[0::2]
+    runs = lengths >= BURST_RUN
+    held = np.lib.stride_tricks.sliding_window_view(z, BURST_RUN).min(axis=1) if z.size >= BURST_RUN else z
+    return int(runs.sum()), int(lengths.max(initial=0)), float(held.max(initial=0.0))
+
+
+def _quantum(y: np.ndarray) -> float:
+    """The reading's code step: the smallest nonzero difference between samples (0 for an unquantised reading)."""
+    d = np.abs(np.diff(y))
+    d = d[d > 0]
+    return float(d.min()) if d.size else 0.0
+
+
+def _neighbour_mean(p: np.ndarray) -> np.ndarray:
+    """Each bin's expected noise power from its neighbours beyond a line's own lobe: the median of ``NEIGHBOURS``
+    bins on each side / ln 2 (the mean of an exponential law), the larger side's, so that a spectrum falling
+    steeply (a slow residual's leakage) does not make its upper edge a line."""
+    pad = np.pad(p, (NEIGHBOURS + LOBE, NEIGHBOURS + LOBE), mode="edge")
+    win = np.lib.stride_tricks.sliding_window_view(pad, NEIGHBOURS)
+    n = p.size
+    left = np.median(win[:n], axis=1)  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
+    right = np.median(win[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n], axis=1)  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
+    return np.maximum(left, right) / math.log(2.0)
+
+
+def _local_max(x: np.ndarray) -> np.ndarray:
+    """Bins that are the largest within ``LOBE`` bins either side: one frequency per line, not its lobe."""
+    pad = np.pad(x, LOBE, mode="constant", constant_values=-np.inf)
+    return x >= np.lib.stride_tricks.sliding_window_view(pad, 2 * LOBE + 1).max(axis=1)
+
+
+def _merge(freqs: list[float]) -> list[float]:
+    """Frequencies within ``MERGE_REL`` of each other (the same line in several records) as one, their median."""
+    out: list[list[float]] = []
+    for f in sorted(freqs):
+        if out and f - out[-1][-1] <= MERGE_REL * f:
+            out[-1].append(f)
+        else:
+            out.append([f])
+    return [float(np.median(g)) for g in out]
+
+
+def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[float, float]], float]:
+    """(frequency Hz, power over the neighbours' mean) of each bin of a foreign line in residual ``e``, and the
+    largest such ratio of any bin searched (the margin a clean record leaves)."""
+    n = e.size
+    w = np.hanning(n)
+    p = np.abs(np.fft.rfft((e - e.mean()) * w)) ** 2
+    f = np.fft.rfftfreq(n, 1.0 / fs)
+    df = f[1] - f[0]
+    ratio = p / np.maximum(_neighbour_mean(p), 1e-300)
+    ok = np.ones(f.size, bool)
+    ok[:LOW_BINS] = False
+    ok[-GUARD_BINS:] = False  # the Nyquist edge
+    drive = _alias(f0 * np.arange(1, ALIAS_ORDERS + 1), fs)
+    for g in drive:
+        ok[np.abs(f - g) <= GUARD_BINS * df] = False
+    for base in (50.0, 60.0):
+        for m in range(1, int(fs / base) + 2):
+            for j in range(-3, 4):
+                g = float(_alias(np.array([m * base + j * f0]), fs)[0])
+                ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
+    peak = _local_max(ratio)
+    hit = ok & (ratio > LINE_POWER) & peak
+    return [(float(f[k]), float(ratio[k])) for k in np.flatnonzero(hit)], float(ratio[ok].max(initial=0.0))
+
+
+def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
+    """Bursts and foreign lines of one sine record, per channel; None if the record cannot be read."""
+    seg = _segment(r)
+    if seg is None:
+        return None
+    t, d, i, f0 = seg
+    fs = float(1.0 / np.median(np.diff(t)))
+    X = _design(t, f0, fs)
+    out: dict[str, Any] = {"record": r.name, "frequency_Hz": f0, }
+    for ch, y in (("displacement", d), ("current", i)):
+        coef, *_ = np.linalg.lstsq(X, y, rcond=None)
+        e = y - X @ coef
+        per = _periodic_median(e, t, f0)
+        e_burst = e - per
+        e_burst = e_burst - _running_median(e_burst, t, f0, bool(np.any(per)))
+        runs, longest, zmax = _bursts(e_burst, _quantum(y))
+        lines, top = _foreign_lines(e, fs, f0)
+        out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top}
+    return out
+
+
+def artefacts(sd: SessionData) -> dict[str, Any]:
+    """The session's recording artefacts: per kind, the records that carry one, and whether it is flagged."""
+    per = [a for a in (record_artefacts(r) for r in sd.all_records()) if a is not None]
+    burst_recs = [a for a in per if any(a[ch]["bursts"] for ch in ("displacement", "current"))]
+    line_recs = [a for a in per if any(a[ch]["lines"] for ch in ("displacement", "current"))]
+    lines: dict[str, list[float]] = {}
+    for a in line_recs:
+        for ch in ("displacement", "current"):
+            for hz, _ in a[ch]["lines"]:
+                lines.setdefault(ch, []).append(hz)
+    out = {
+        "records_read": len(per),
+        "bursts": {"records": len(burst_recs), "runs": int(sum(a[ch]["bursts"] for a in burst_recs for ch in ("displacement", "current"))),
+                   "channels": sorted({ch for a in burst_recs for ch in ("displacement", "current") if a[ch]["bursts"]}),
+                   "flagged": len(burst_recs) >= MIN_RECORDS},
+        "lines": {"records": len(line_recs), "frequencies_Hz": {ch: [float(f"{f:.4g}") for f in _merge(v)][:20] for ch, v in lines.items()},
+                  "flagged": len(line_recs) >= MIN_RECORDS},
+        "burst_z": BURST_Z, "burst_run": BURST_RUN, "line_power": LINE_POWER, "min_records": MIN_RECORDS,
+    }
+    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"])
+    out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
+                  "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0)}
+    return out
+
+
+def detail(a: dict[str, Any]) -> str:
+    """One line for the report and the JSON's ``residual.where``: what the recording shows and where."""
+    parts = []
+    if a["bursts"]["flagged"]:
+        b = a["bursts"]
+        parts.append(f"the {' and '.join(b['channels'])} reading leaves its signal for {BURST_RUN}+ samples ({b['runs']} times in "
+                     f"{b['records']} sine records): held, clipped or dropped readings")
+    if a["lines"]["flagged"]:
+        fr = "; ".join(f"{ch} {', '.join(f'{x:g}' for x in v[:6])} Hz" for ch, v in a["lines"]["frequencies_Hz"].items())
+        parts.append(f"narrow lines neither the drive's harmonics nor the mains' in {a['lines']['records']} sine records ({fr})")
+    return "; ".join(parts)
