@@ -280,6 +280,13 @@ def test_a_cause_must_reach_every_structured_block():
 
     assert ranked(10.0) == ["hysteresis", "back_relaxation"]
     assert ranked(1.0) == ["back_relaxation", "hysteresis"]
+    # moving a block away from the data is no reach: an odd memory that raises even harmonics (fresh3's pre-curved
+    # strip) does not rank before the static form that predicts better and leaves them
+    base = {"frf_d": 3.0, "harm_d": 10.0}
+    static = Candidate("large_deflection", {}, -5000.0, 1.0, 0.25, 0.0, 0.25, held=held(0.5, 10.0))
+    raised = Candidate("hysteresis", {}, -5000.0, 1.0, 0.45, 0.0, 0.45, held=held(0.6, 10.2))
+    assert [c.name for c in _significant([raised, static], {"frf_d", "harm_d"}, base_rms=base, accuracy=CLEAN_ACCURACY)] == \
+        ["large_deflection", "hysteresis"]
 
 
 def test_the_signature_reorders_only_candidates_of_the_same_order():
@@ -295,3 +302,21 @@ def test_the_signature_reorders_only_candidates_of_the_same_order():
     memory = Candidate("hysteresis", {}, -5000.0, 1.0, 0.03 * REACH_FACTOR * 1.5, 0.0, 0.1, held=held(5.0))
     assert [c.name for c in _significant([memory, linear], {"frf_d", "harm_d"}, base_rms=base, accuracy=CLEAN_ACCURACY)] == \
         ["back_relaxation", "hysteresis"]
+
+
+def test_the_curled_arc_reads_the_arc_around_its_rest_curl():
+    """The large-deflection family's curled arc is the height of the tip on an arc of curvature k0 + 2 d/l^2 less its
+    rest height, at unit small-signal slope: the flat arc (d - d^3/(3 l^2)) at theta0 = 0, mirrored by the curl's side."""
+    import numpy as np
+
+    from labrig.diagnose.arc import curled_reading
+
+    ell, d = 0.03, np.linspace(-3e-3, 3e-3, 13)
+    np.testing.assert_allclose(curled_reading(d, 0.0, ell), d - d**3 / (3 * ell**2), atol=2e-8)
+    theta0 = 0.35
+    k0, w = theta0 / ell, lambda k: (1 - np.cos(k * ell)) / k  # noqa: E731
+    slope = (w(k0 + 1e-6) - w(k0 - 1e-6)) / 2e-6 * 2 / ell**2  # dw/dd at rest
+    np.testing.assert_allclose(curled_reading(d, theta0, ell), (w(k0 + 2 * d / ell**2) - w(k0)) / slope, rtol=1e-6, atol=1e-12)
+    np.testing.assert_allclose(curled_reading(d, theta0, ell), -curled_reading(-d, -theta0, ell), atol=1e-15)
+    even = curled_reading(d, theta0, ell) + curled_reading(-d, theta0, ell)
+    assert np.all(even[d != 0] < 0)  # bending into the curl reads less than bending out of it

@@ -23,6 +23,7 @@ from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction,
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import Refit, refit
+from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
@@ -346,6 +347,12 @@ class _Scorer:
         forms = [self.score_form(name, ext) for ext in family]
         return min(forms, key=lambda c: (c.delta_bic >= DBIC_EFFECT, max(c.heldout_ratio, c.ratio_vs_reference) if c.delta_bic < DBIC_EFFECT else c.delta_bic))
 
+    def portable(self, name: str) -> tuple[Candidate, int | None]:
+        """``score`` as a worker sends it back: the form as its index in the family (some forms are closures)."""
+        c = self.score(name)
+        k = next((i for i, e in enumerate(FAMILIES[name]) if e is c.ext), None)
+        return dataclasses.replace(c, ext=None), k
+
     def score_form(self, name: str, ext: Extension) -> Candidate:
         if not (ext.refit_mechanics and self.refit_mechanics):
             th, c = _fit_extension(name, self.ctx_fit, ext)
@@ -367,7 +374,13 @@ class _Scorer:
 def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_held: dict,
            refit_mechanics: bool = False) -> list[Candidate]:
     scorer = _Scorer(ctx_fit, ctx_held, c0, n, base_held, refit_mechanics)
-    return sorted((scorer.score(name) for name in names), key=lambda c: c.delta_bic)
+    if refit_mechanics and any(ext.refit_mechanics for name in names for ext in FAMILIES[name]):
+        scorer.reference()  # once, before the workers fork: each would refit it otherwise
+    # the largest families first (their cost grows with their forms), so that no worker is left with one at the end
+    order = sorted(names, key=lambda name: -len(FAMILIES[name]))
+    done = dict(zip(order, forked_map(scorer.portable, order)))
+    cands = [dataclasses.replace(c, ext=None if k is None else FAMILIES[c.name][k]) for c, k in (done[name] for name in names)]
+    return sorted(cands, key=lambda c: c.delta_bic)
 
 
 def reaches(c: Candidate, base_rms: dict[str, float], accuracy: dict[str, float]) -> bool:

@@ -23,6 +23,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
                                       creep_since_first_record, follow_force, played_drive)
+from labrig.diagnose.arc import curled_arc
 from labrig.physics import timeresp
 
 _N = 64
@@ -479,6 +480,11 @@ FAMILIES["hysteresis"] += [
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
           _bouc_wen_output, "Bouc-Wen loop in the displacement path, y = d - w z(d), |z| <= z_sat: smooth memory on the sensor side",
           refit_mechanics=True),
+]
+FAMILIES["large_deflection"] += [
+    _form("large_deflection", "curled_arc", ("theta0_rad", "length_factor"), (0.2, 1.0), (-1.2, 0.02), (1.2, 5.0), curled_arc,
+          "the arc read around a rest curl or a tilted beam, y = l [f(theta0 + 2 d/l) - f(theta0)]/(2 f'(theta0)), "
+          "f(x) = (1 - cos x)/x: even and odd distortion tied by one geometry"),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",

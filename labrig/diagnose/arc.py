@@ -1,0 +1,67 @@
+"""The large-deflection family's curled arc: the tip's height read off an arc bent around a rest curvature.
+
+A strip bent at uniform curvature k over a length l has its tip at height w(k) = (1 - cos k l)/k, so the flat
+strip's reading is d - d^3/(3 l^2) + ... (the catalogue's cubic, c3 = 1/3 at l = L). A strip that rests curled (its
+tip at theta0 from the clamp's plane: plating and hydration curl most IPMC strips) or a beam read by a laser tilted
+by theta0 adds the bend to k0 = theta0/l: the reading w(k0 + k) - w(k0) is even as well as odd in k, the even part
+signed by the curl's side, both tied by the one geometry. Normalised to the small-signal gain the baseline fitted:
+
+    y(d) = l [f(theta0 + 2 d/l) - f(theta0)] / (2 f'(theta0)),   f(x) = (1 - cos x)/x,
+
+with d the displacement of the linear model (uniform curvature k = 2 d/l^2). l = lambda L is the arc's effective
+length (the spot's position and the clamp's edge move it); theta0 -> 0 gives the flat arc, d - d^3/(3 l^2) to
+third order. Sines are read by the map's describing function at each sine's amplitude (fundamental, 2f and 3f of
+y(|a| cos wt)), the step's prediction through the map as it stands. Derivation and checks: docs/diagnosis.md
+("Families").
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from labrig.diagnose.catalogue import Context, _drive, baseline
+
+_GRID = 32  # samples per cycle for the describing function (harmonics to 3f: far above what they need)
+
+
+def _f(x: np.ndarray) -> np.ndarray:
+    """(1 - cos x)/x, by its series near 0."""
+    x = np.asarray(x, float)
+    small = np.abs(x) < 1e-3
+    xs = np.where(small, 1.0, x)
+    return np.where(small, x / 2 - x**3 / 24, (1 - np.cos(xs)) / xs)
+
+
+def _df(x: float) -> float:
+    """f'(x) = (x sin x - (1 - cos x))/x^2, 1/2 at 0."""
+    if abs(x) < 1e-3:
+        return 0.5 - x**2 / 8
+    return float((x * np.sin(x) - (1 - np.cos(x))) / x**2)
+
+
+def curled_reading(d: np.ndarray, theta0: float, ell: float) -> np.ndarray:
+    """y(d) of the module's docstring: the height read off the curled arc, unit slope at d = 0."""
+    return ell * (_f(theta0 + 2 * np.asarray(d, float) / ell) - _f(np.array(theta0))) / (2 * _df(theta0))
+
+
+def curled_arc(th, ctx: Context):
+    """The baseline read through ``curled_reading``: theta0 (rad, the curl's side by its sign) and the effective
+    length's factor lambda (l = lambda L)."""
+    theta0, lam = th
+    ell = lam * ctx.length
+    p = baseline(ctx)
+    if ctx.sines:
+        a1 = p.Hd * np.array([_drive(s) for s in ctx.sines])
+        amp, phase = np.abs(a1), np.exp(1j * np.angle(a1))
+        wt = 2 * np.pi * np.arange(_GRID) / _GRID
+        y = curled_reading(amp[:, None] * np.cos(wt)[None, :], theta0, ell)
+        c = 2 * np.fft.rfft(y, axis=1)[:, 1:4].real / _GRID  # an even function of wt: cosine coefficients only
+        c1 = np.where(np.abs(c[:, 0]) > 0, c[:, 0], 1.0)
+        g = np.where(amp > 0, c1 / np.where(amp > 0, amp, 1.0), 1.0)
+        p.hd = p.hd.astype(complex)
+        p.hd[:, 0] = p.hd[:, 0] + c[:, 1] / c1 * phase
+        p.hd[:, 1] = p.hd[:, 1] + c[:, 2] / c1 * phase**2
+        p.Hd = p.Hd * g
+    for k, d in enumerate(p.step_d):
+        p.step_d[k] = curled_reading(d, theta0, ell)
+    return p
