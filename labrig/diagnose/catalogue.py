@@ -77,6 +77,9 @@ class Extension:
     describe: str = ""
     refit_mechanics: bool = False  # change the linear path's shape: fitted with alpha, gamma, K_t bar free
     form: str = ""  # which form of the effect's family (labrig.diagnose.families)
+    # a start read off the data it is fitted on (one least-squares start besides x0), for forms of many parameters
+    # whose values the data show directly (a line's amplitude)
+    start: Callable[[Context], np.ndarray] | None = None
 
 
 def _drive(s: SineFeature) -> complex:

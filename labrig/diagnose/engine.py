@@ -301,7 +301,8 @@ def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tup
         return np.concatenate([v[0] for v in bl.values()])
 
     best_x, best = np.array(ext.x0, float), np.inf
-    for x0 in _starts(name, ext):
+    first = [np.clip(ext.start(ctx), ext.lo, ext.hi)] if ext.start is not None else []
+    for x0 in first + _starts(name, ext):
         try:
             r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale="jac", max_nfev=60)
         except (ValueError, FloatingPointError):

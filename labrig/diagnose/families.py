@@ -24,6 +24,7 @@ from scipy.signal import lfilter
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
                                       creep_since_first_record, follow_force, played_drive)
 from labrig.diagnose.arc import curled_arc
+from labrig.diagnose.features import LINE_HZ
 from labrig.physics import timeresp
 
 _N = 64
@@ -485,6 +486,34 @@ FAMILIES["large_deflection"] += [
     _form("large_deflection", "curled_arc", ("theta0_rad", "length_factor"), (0.2, 1.0), (-1.2, 0.02), (1.2, 5.0), curled_arc,
           "the arc read around a rest curl or a tilted beam, y = l [f(theta0 + 2 d/l) - f(theta0)]/(2 f'(theta0)), "
           "f(x) = (1 - cos x)/x: even and odd distortion tied by one geometry"),
+]
+_MAINS_KEYS = [(ch, f) for ch in ("d", "i") for f in LINE_HZ]
+
+
+def _mains_harmonics(th, ctx: Context):
+    """A constant-amplitude line at every mains frequency and harmonic read (``features.LINE_HZ``), each channel's
+    own: a chopped (triac, rectifier) or saturating (transformer) current couples its harmonics in too."""
+    p = baseline(ctx)
+    p.line = {key: a * 1e-6 for key, a in zip(_MAINS_KEYS, th)}
+    return p
+
+
+def _mains_start(ctx: Context) -> np.ndarray:
+    """Each line's amplitude as the records show it: the mean power less the noise's (1.25 x the floor, as
+    ``engine.blocks`` reads it), in um and uA."""
+    out = []
+    for key in _MAINS_KEYS:
+        pw = [a**2 - (1.25 * line.floor[key]) ** 2 for line in ctx.lines for k, a in line.amp.items()
+              if k == key and np.isfinite(line.floor[key]) and line.floor[key] > 0]
+        out.append(np.sqrt(max(float(np.mean(pw)), 0.0)) * 1e6 if pw else 0.0)
+    return np.array(out)
+
+
+FAMILIES["mains_pickup"] += [
+    _form("mains_pickup", "harmonics", tuple(f"{'disp' if ch == 'd' else 'cur'}{f:g}_{'um' if ch == 'd' else 'uA'}" for ch, f in _MAINS_KEYS),
+          (0.0,) * len(_MAINS_KEYS), (0.0,) * len(_MAINS_KEYS), (1e4,) * len(_MAINS_KEYS), _mains_harmonics,
+          "a constant line at each mains frequency and its harmonics to the 7th (50/60 Hz grids), per channel: a chopped or "
+          "saturating load's pickup", start=_mains_start),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",

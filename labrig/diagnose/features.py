@@ -22,7 +22,10 @@ from labrig.physics.params import Specimen
 from labrig.records import SINE_KINDS
 
 STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of interest are slow)
-LINE_HZ = (50.0, 60.0)
+MAINS_HZ = (50.0, 60.0)
+MAINS_ORDERS = 7  # the mains' harmonics read: a triac's or rectifier's chopped current is rich in them, a transformer's saturation too
+LINE_HZ = tuple(sorted({base * n for base in MAINS_HZ for n in range(1, MAINS_ORDERS + 1)}))
+DRIVE_ORDERS = 20  # a drive harmonic within 2 Hz of a line hides it (it would read as pickup)
 
 
 @dataclass
@@ -77,7 +80,8 @@ class StepFeature:
 
 @dataclass
 class LineFeature:
-    """Amplitude of the 50/60 Hz components in a record's displacement and current, with the local noise floor."""
+    """Amplitude of the mains' components (50/60 Hz and their harmonics, ``LINE_HZ``) in a record's displacement and
+    current, with the local noise floor."""
 
     name: str
     pressure_kPa: float | None
@@ -162,19 +166,25 @@ def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
     return float(coef[0]), float(np.mean(f)), sigma_w * math.sqrt(12.0 / f.size) / dur
 
 
-def _line(t: np.ndarray, x: np.ndarray, fs: float, f_line: float) -> tuple[float, float]:
-    """(amplitude at f_line, median amplitude of the neighbouring bins), amplitude-calibrated Hann spectrum."""
-    if f_line * 2.2 > fs or t.size < 256:
-        return 0.0, float("inf")
+def _lines(t: np.ndarray, x: np.ndarray, fs: float, freqs) -> dict[float, tuple[float, float]]:
+    """Per line frequency: (amplitude there, median amplitude of the neighbouring bins), from one amplitude-calibrated
+    Hann spectrum of the record; (0, inf) for a line the record cannot resolve (within 1.1x of Nyquist)."""
+    out = {f: (0.0, float("inf")) for f in freqs}
+    if t.size < 256:
+        return out
     n = t.size
     w = np.hanning(n)
     u = (t - t[0]) / max(float(t[-1] - t[0]), 1e-12) - 0.5  # on [-0.5, 0.5]: a cubic in absolute seconds is ill-conditioned
     spec = np.abs(np.fft.rfft((x - np.polyval(np.polyfit(u, x, 3), u)) * w)) * 2 / w.sum()
-    freqs = np.fft.rfftfreq(n, 1.0 / fs)
-    k = int(np.argmin(np.abs(freqs - f_line)))
-    lo, hi = max(k - 40, 1), min(k + 40, spec.size)
-    near = np.r_[spec[lo : max(k - 3, lo)], spec[min(k + 4, hi) : hi]]
-    return float(spec[max(k - 1, 0) : k + 2].max()), float(np.median(near)) if near.size else float("inf")
+    bins = np.fft.rfftfreq(n, 1.0 / fs)
+    for f in freqs:
+        if f * 2.2 > fs:
+            continue
+        k = int(np.argmin(np.abs(bins - f)))
+        lo, hi = max(k - 40, 1), min(k + 40, spec.size)
+        near = np.r_[spec[lo : max(k - 3, lo)], spec[min(k + 4, hi) : hi]]
+        out[f] = (float(spec[max(k - 1, 0) : k + 2].max()), float(np.median(near)) if near.size else float("inf"))
+    return out
 
 
 def _decimate(r: TimeRecord, rate: float) -> tuple[int, tuple[np.ndarray, ...]]:
@@ -233,11 +243,10 @@ def extract(sd: SessionData) -> Features:
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
         amp, floor = {}, {}
         f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
+        freqs = [f for f in LINE_HZ if not (f_drive and any(abs(k * f_drive - f) < 2.0 for k in range(1, DRIVE_ORDERS + 1)))]
         for ch, x in (("d", r.d), ("i", r.i)):
-            for f in LINE_HZ:
-                if f_drive and any(abs(k * f_drive - f) < 2.0 for k in range(1, 8)):
-                    continue  # a drive harmonic sits on the line: it would read as pickup
-                amp[(ch, f)], floor[(ch, f)] = _line(r.t, x, r.fs, f)
+            for f, (a, fl) in _lines(r.t, x, r.fs, freqs).items():
+                amp[(ch, f)], floor[(ch, f)] = a, fl
         rms = {ch: float(np.std(x)) or 1.0 for ch, x in (("d", r.d), ("i", r.i))}
         feats.lines.append(LineFeature(r.name, p, amp, floor, rms))
     return feats
