@@ -233,6 +233,12 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     return out
 
 
+def level(a: dict[str, Any]) -> float:
+    """The worst artefact over its threshold: the sustained burst level / ``BURST_Z`` or the line power / ``LINE_POWER``,
+    whichever is larger (> 1 for a flagged kind)."""
+    return float(max(a["max"]["burst_z"] / BURST_Z, a["max"]["line_power"] / LINE_POWER))
+
+
 def detail(a: dict[str, Any]) -> str:
     """One line for the report and the JSON's ``residual.where``: what the recording shows and where."""
     parts = []

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
-from labrig.diagnose.artefacts import MIN_RECORDS as MIN_ARTEFACT_RECORDS, artefacts, detail as artefact_detail
+from labrig.diagnose.artefacts import artefacts, detail as artefact_detail, level as artefact_level
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
@@ -517,8 +517,8 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
     if recording["flagged"]:
-        residual_where.insert(0, {"block": "recording", "level": float(recording["bursts"]["records"] + recording["lines"]["records"]),
-                                  "over_accuracy": float(max(recording["bursts"]["records"], recording["lines"]["records"]) / MIN_ARTEFACT_RECORDS),
+        level = artefact_level(recording)  # the worst artefact over its threshold
+        residual_where.insert(0, {"block": "recording", "level": level, "over_accuracy": level,
                                   "detail": artefact_detail(recording), "lines_Hz": recording["lines"]["frequencies_Hz"]})
     best = named[0] if named else cands[0]  # without a verdict: the best candidate, for the record
     return {
