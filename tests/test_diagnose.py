@@ -320,3 +320,35 @@ def test_the_curled_arc_reads_the_arc_around_its_rest_curl():
     np.testing.assert_allclose(curled_reading(d, theta0, ell), -curled_reading(-d, -theta0, ell), atol=1e-15)
     even = curled_reading(d, theta0, ell) + curled_reading(-d, theta0, ell)
     assert np.all(even[d != 0] < 0)  # bending into the curl reads less than bending out of it
+
+
+def test_the_line_features_read_the_mains_harmonics_and_the_form_starts_from_them():
+    """A chopped load's pickup (50 Hz with its 5th and 7th harmonics) read from one spectrum: each line's amplitude
+    within 2 %, the lines that are not there at the noise; mains_pickup's harmonics form starts from what the records
+    show, the noise's power taken off."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose import families
+    from labrig.diagnose.features import LINE_HZ, _lines
+
+    assert {50.0, 60.0, 150.0, 250.0, 350.0, 420.0} <= set(LINE_HZ) and max(LINE_HZ) == 420.0
+    fs, t = 2000.0, np.arange(0, 4.0, 1 / 2000.0)
+    rng = np.random.default_rng(3)
+    amps = {50.0: 2e-6, 250.0: 0.8e-6, 350.0: 0.5e-6}
+    x = sum(a * np.sin(2 * np.pi * f * t + f) for f, a in amps.items()) + 1e-8 * rng.standard_normal(t.size)
+    read = _lines(t, x, fs, LINE_HZ)
+    for f, a in amps.items():
+        assert read[f][0] == pytest.approx(a, rel=0.02)
+    assert read[150.0][0] < 0.01 * amps[350.0] and read[150.0][1] < 0.01 * amps[350.0]
+    assert read[60.0][1] > 0 and np.isfinite(read[60.0][1])
+    slow = _lines(t[::10], x[::10], fs / 10, LINE_HZ)  # 200 Hz: nothing above 1/2.2 of it is read
+    assert slow[120.0] == (0.0, float("inf")) and np.isfinite(slow[50.0][1])
+
+    line = SimpleNamespace(amp={("d", 250.0): 1e-6, ("i", 50.0): 5e-6}, floor={("d", 250.0): 0.4e-6, ("i", 50.0): 1e-8})
+    start = families._mains_start(SimpleNamespace(lines=[line, line]))
+    keys = families._MAINS_KEYS
+    assert start[keys.index(("d", 250.0))] == pytest.approx(np.sqrt(1.0 - 0.5**2), rel=1e-9)  # um, (1.25 x 0.4)^2 off
+    assert start[keys.index(("i", 50.0))] == pytest.approx(5.0, rel=1e-4)
+    assert start[keys.index(("d", 50.0))] == 0.0

@@ -25,6 +25,7 @@ docs/diagnosis.md ("Recording artefacts"). Only the sine records are read: their
 from __future__ import annotations
 
 import math
+import warnings
 from typing import Any
 
 import numpy as np
@@ -137,12 +138,14 @@ def _neighbour_mean(p: np.ndarray) -> np.ndarray:
     """Each bin's expected noise power from its neighbours beyond a line's own lobe: the median of ``NEIGHBOURS``
     bins on each side / ln 2 (the mean of an exponential law), the larger side's, so that a spectrum falling
     steeply (a slow residual's leakage) does not make its upper edge a line."""
-    pad = np.pad(p, (NEIGHBOURS + LOBE, NEIGHBOURS + LOBE), mode="edge")
+    pad = np.pad(p, (NEIGHBOURS + LOBE, NEIGHBOURS + LOBE), constant_values=np.nan)  # no neighbours past either end
     win = np.lib.stride_tricks.sliding_window_view(pad, NEIGHBOURS)
     n = p.size
-    left = np.median(win[:n], axis=1)  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
-    right = np.median(win[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n], axis=1)  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
-    return np.maximum(left, right) / math.log(2.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # a side with no bins at all (the spectrum's ends)
+        left = np.nanmedian(win[:n], axis=1)  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
+        right = np.nanmedian(win[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n], axis=1)  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
+    return np.fmax(left, right) / math.log(2.0)  # one side where the other has none (a line at Nyquist)
 
 
 def _local_max(x: np.ndarray) -> np.ndarray:
@@ -173,7 +176,6 @@ def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[floa
     ratio = p / np.maximum(_neighbour_mean(p), 1e-300)
     ok = np.ones(f.size, bool)
     ok[:LOW_BINS] = False
-    ok[-GUARD_BINS:] = False  # the Nyquist edge
     drive = _alias(f0 * np.arange(1, ALIAS_ORDERS + 1), fs)
     for g in drive:
         ok[np.abs(f - g) <= GUARD_BINS * df] = False

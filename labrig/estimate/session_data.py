@@ -210,6 +210,31 @@ def regular_grid(t: np.ndarray, *cols: np.ndarray) -> tuple[int, int, np.ndarray
     return n - t.size, gaps, grid, [np.interp(grid, t, c) for c in cols]
 
 
+STAMP_LEVELS = 8  # distinct spacings (to 1 ppm of the median) at most for stamps rounded to a grid; jitter has many
+
+
+def rounded_stamps(t: np.ndarray) -> np.ndarray | None:
+    """The sampling clock's uniform grid under stamps that are it rounded (32-bit float stamps, a CSV's fixed decimals,
+    whole milliseconds), or None. Such stamps step by a few distinct spacings and stay within half a spacing of
+    their least-squares line; their median spacing is one of the rounded values, not the clock's (a 500 Hz record
+    stamped in float32 at 1600 s into the session reads 512 Hz), and their scatter is not the samples' timing.
+    Stamps with a continuous spread of spacings (a software-timed clock's jitter) are the samples' true times
+    and are kept, as are uniform ones."""
+    if t.size < 8:
+        return None
+    d = np.diff(t)
+    dt = float(np.median(d))
+    if not dt > 0:
+        return None
+    levels = np.unique(np.round(d / dt, 6))
+    if not 2 <= levels.size <= STAMP_LEVELS:
+        return None
+    k = np.arange(t.size, dtype=float) - 0.5 * (t.size - 1)
+    slope, mid = np.polyfit(k, t, 1)
+    line = mid + slope * k
+    return line if float(np.max(np.abs(t - line))) < 0.5 * slope else None
+
+
 def load_session(path: str | Path) -> SessionData:
     from labrig.store import SessionReader
 
@@ -219,6 +244,7 @@ def load_session(path: str | Path) -> SessionData:
     by_p: dict[float, PressureData] = {}
     notes: list[str] = []
     loose: list[TimeRecord] = []
+    rounded = 0
     with SessionReader(p) as r:
         sample = dict(r.sample)
         for st in r.steps():
@@ -247,6 +273,10 @@ def load_session(path: str | Path) -> SessionData:
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
+            grid = rounded_stamps(rec.t)
+            if grid is not None:
+                rounded += 1
+                rec.t = grid
             filled = 0
             if st.kind not in SINE_KINDS:  # a sine is demodulated at its samples' own times: gaps cost it nothing
                 filled, gaps, rec.t, (rec.v, rec.i, rec.d) = regular_grid(rec.t, rec.v, rec.i, rec.d)
@@ -258,6 +288,8 @@ def load_session(path: str | Path) -> SessionData:
             bucket.records.append(rec)
             if st.kind == RecordKind.STEPPED_SINE:
                 bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(st.metadata["frequency_Hz"]), *sine_cycles(rec)))
+    if rounded:
+        notes.append(f"{rounded} records' time stamps are a uniform clock rounded to a grid: read on that clock's grid")
     for b in by_p.values():
         b.sines.sort(key=lambda s: s.frequency_Hz)
         _add_multisine(b, notes)
