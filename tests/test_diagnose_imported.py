@@ -8,6 +8,7 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from labrig.analysis import load_and_fit, run_diagnosis
 from labrig.cli import main
@@ -148,3 +149,26 @@ def test_samples_lost_in_packets_are_put_back_on_the_records_grid():
     jitter = t + np.random.default_rng(3).uniform(-2e-4, 2e-4, t.size)
     filled, gaps, tj, (rj,) = regular_grid(jitter, ramp)
     assert (filled, gaps) == (0, 0) and tj is jitter and rj is ramp
+
+
+@pytest.mark.parametrize("rounding", ["float32", "decimals", "whole_ms"])
+def test_stamps_rounded_to_a_grid_are_read_on_the_clocks_grid(rounding):
+    """A uniform clock whose stamps were stored rounded (32-bit floats late in a session, a CSV's four decimals at 3
+    kHz, whole milliseconds at 300 Hz) comes back on its own uniform grid: its rate is the clock's, not the median
+    spacing's rounded value (a 500 Hz record in float32 at 1600 s reads 512 Hz). Stamps with a spread of spacings (a
+    software-timed clock's jitter) and uniform stamps are left as they are."""
+    import numpy as np
+
+    from labrig.estimate.session_data import rounded_stamps
+
+    fs, t0 = {"float32": (500.0, 1600.0), "decimals": (3000.0, 0.0), "whole_ms": (300.0, 10.0)}[rounding]
+    true = t0 + np.arange(4000) / fs
+    stored = {"float32": lambda t: t.astype(np.float32).astype(float), "decimals": lambda t: np.round(t, 4),
+              "whole_ms": lambda t: np.round(t, 3)}[rounding](true)
+    assert abs(1 / np.median(np.diff(stored)) - fs) > 1e-4 * fs or np.ptp(stored - true) > 0  # the stamps are off
+    grid = rounded_stamps(stored - stored[0])
+    assert grid is not None
+    np.testing.assert_allclose(1 / np.diff(grid), fs, rtol=5e-5)
+    np.testing.assert_allclose(grid, true - stored[0], atol=0.5 / fs)
+    jitter = true + np.random.default_rng(1).normal(0, 0.1 / fs, true.size)
+    assert rounded_stamps(jitter) is None and rounded_stamps(np.arange(4000) / fs) is None
