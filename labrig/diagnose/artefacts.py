@@ -197,7 +197,7 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
     t, d, i, f0 = seg
     fs = float(1.0 / np.median(np.diff(t)))
     X = _design(t, f0, fs)
-    out: dict[str, Any] = {"record": r.name, "frequency_Hz": f0, }
+    out: dict[str, Any] = {"record": r.name, "frequency_Hz": f0}
     for ch, y in (("displacement", d), ("current", i)):
         coef, *_ = np.linalg.lstsq(X, y, rcond=None)
         e = y - X @ coef
