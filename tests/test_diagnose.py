@@ -287,6 +287,12 @@ def test_a_cause_must_reach_every_structured_block():
     raised = Candidate("hysteresis", {}, -5000.0, 1.0, 0.45, 0.0, 0.45, held=held(0.6, 10.2))
     assert [c.name for c in _significant([raised, static], {"frf_d", "harm_d"}, base_rms=base, accuracy=CLEAN_ACCURACY)] == \
         ["large_deflection", "hysteresis"]
+    # but a memory that removes most of the harmonics while shifting the FRF by 6 % does move both (fresh3's
+    # Maxwell-slip): it ranks before the linear form that leaves the harmonics exactly where they were
+    linear = Candidate("back_relaxation", {}, -5000.0, 1.0, 0.39, 0.0, 0.39, held=held(2.5, 10.0))
+    slip = Candidate("hysteresis", {}, -5000.0, 1.0, 0.45, 0.0, 0.45, held=held(3.18, 3.3))
+    assert [c.name for c in _significant([linear, slip], {"frf_d", "harm_d"}, base_rms=base, accuracy=CLEAN_ACCURACY)] == \
+        ["hysteresis", "back_relaxation"]
 
 
 def test_the_signature_reorders_only_candidates_of_the_same_order():
