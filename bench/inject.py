@@ -47,6 +47,12 @@ BASES = {  # clean sessions the validation set is written into: (protocol, prese
 }
 
 
+def register_forms(forms: dict[str, dict[str, Callable[[Session], None]]]) -> None:
+    """A held-out set's forms, added beside the forms of the earlier sets in ``REGISTRY`` (none replaced)."""
+    for truth, by_name in forms.items():
+        REGISTRY.setdefault(truth, {}).update(by_name)
+
+
 def register_free_length(name: str, length_m: float) -> None:
     """The paper's strip with another free length, as preset ``name``. Registered in every process that runs or
     reads it (the simulated bench and the sensor-offset forms look presets up by name)."""

@@ -654,8 +654,7 @@ FRESH3_FORMS: dict[str, dict[str, Callable[[Session], None]]] = {
     "mains_pickup": {"compressor": mp_compressor, "gain_ripple": mp_gain_ripple},
     "unexplained": {"cap_coupling": out_cap_coupling, "current_limit": out_current_limit, "pump_vibration": out_pump_vibration},
 }
-for _truth, _forms in FRESH3_FORMS.items():  # added beside the forms of the earlier sets, none replaced
-    inject.REGISTRY.setdefault(_truth, {}).update(_forms)
+inject.register_forms(FRESH3_FORMS)
 
 
 # ------------------------------------------------------------------------------------------------ variants

@@ -553,8 +553,7 @@ FRESH4_FORMS: dict[str, dict[str, Callable[[Session], None]]] = {
     "mains_pickup": {"triac_heater": mp_triac_heater, "ground_loop": mp_ground_loop},
     "unexplained": {"laser_dropout": out_laser_dropout, "dac_bit": out_dac_bit, "pwm_alias": out_pwm_alias},
 }
-for _truth, _forms in FRESH4_FORMS.items():  # added beside the forms of the earlier sets, none replaced
-    inject.REGISTRY.setdefault(_truth, {}).update(_forms)
+inject.register_forms(FRESH4_FORMS)
 
 
 # ------------------------------------------------------------------------------------------------ variants

@@ -571,8 +571,7 @@ FRESH5_FORMS: dict[str, dict[str, Callable[[Session], None]]] = {
     "mains_pickup": {"six_pulse": mp_six_pulse, "diode_rectified": mp_diode_rectified},
     "unexplained": {"spikes": out_spikes, "tribo": out_tribo, "gsm_buzz": out_gsm_buzz, "interleave": out_interleave},
 }
-for _truth, _forms in FRESH5_FORMS.items():  # added beside the forms of the earlier sets, none replaced
-    inject.REGISTRY.setdefault(_truth, {}).update(_forms)
+inject.register_forms(FRESH5_FORMS)
 
 
 # ------------------------------------------------------------------------------------------------ variants

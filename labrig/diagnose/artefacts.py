@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 from scipy.ndimage import median_filter
 
+from labrig.diagnose.features import MAINS_HZ
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
 from labrig.records import SINE_KINDS
 
@@ -100,11 +101,10 @@ def _periodic_median(e: np.ndarray, t: np.ndarray, f0: float) -> np.ndarray:
     return med[b]
 
 
-def _running_median(e: np.ndarray, t: np.ndarray, f0: float, periodic_removed: bool) -> np.ndarray:
+def _running_median(e: np.ndarray, fs: float, f0: float, periodic_removed: bool) -> np.ndarray:
     """The residual's slow part (a start transient, a drift faster than the trend) as a running median: it follows
     any monotonic stretch exactly and ignores an excursion shorter than half its window. The window is
     ``SLOW_WINDOW_S``, and at most a quarter cycle while the periodic part is still in the residual."""
-    fs = 1.0 / float(np.median(np.diff(t)))
     w = fs * SLOW_WINDOW_S if periodic_removed else min(fs * SLOW_WINDOW_S, fs / f0 / 4)
     w = int(min(max(w, 9), e.size // 4)) | 1
     return median_filter(e, size=w, mode="nearest") if w >= 9 else np.zeros_like(e)
@@ -179,7 +179,7 @@ def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[floa
     drive = _alias(f0 * np.arange(1, ALIAS_ORDERS + 1), fs)
     for g in drive:
         ok[np.abs(f - g) <= GUARD_BINS * df] = False
-    for base in (50.0, 60.0):
+    for base in MAINS_HZ:
         for m in range(1, int(fs / base) + 2):
             for j in range(-3, 4):
                 g = float(_alias(np.array([m * base + j * f0]), fs)[0])
@@ -203,7 +203,7 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
         e = y - X @ coef
         per = _periodic_median(e, t, f0)
         e_burst = e - per
-        e_burst = e_burst - _running_median(e_burst, t, f0, bool(np.any(per)))
+        e_burst = e_burst - _running_median(e_burst, fs, f0, bool(np.any(per)))
         runs, longest, zmax = _bursts(e_burst, _quantum(y))
         lines, top = _foreign_lines(e, fs, f0)
         out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top}

@@ -503,8 +503,8 @@ def _mains_start(ctx: Context) -> np.ndarray:
     ``engine.blocks`` reads it), in um and uA."""
     out = []
     for key in _MAINS_KEYS:
-        pw = [a**2 - (1.25 * line.floor[key]) ** 2 for line in ctx.lines for k, a in line.amp.items()
-              if k == key and np.isfinite(line.floor[key]) and line.floor[key] > 0]
+        pw = [line.amp[key] ** 2 - (1.25 * line.floor[key]) ** 2 for line in ctx.lines
+              if key in line.amp and np.isfinite(line.floor[key]) and line.floor[key] > 0]
         out.append(np.sqrt(max(float(np.mean(pw)), 0.0)) * 1e6 if pw else 0.0)
     return np.array(out)
 
