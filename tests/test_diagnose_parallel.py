@@ -32,11 +32,14 @@ def test_the_worker_count_is_the_environments(monkeypatch, value, expected):
 
 def test_the_diagnosis_over_workers_is_the_diagnosis_in_one_process(bench_sessions, monkeypatch):
     """The suite's clean sweep was diagnosed by `labrig run ... --diagnose` with the default workers; diagnosed again
-    here in this process alone, every candidate's evidence and held-out ratio is the same to the bit."""
+    here in this process alone, the same candidates in the same order with the same evidence and held-out ratio (to
+    1e-9: two processes' linear algebra may differ in the last bit)."""
     case = bench_sessions.get(BENCH_CASES)[0]
     monkeypatch.setenv("LABRIG_DIAGNOSE_WORKERS", "1")
     alone = run_diagnosis(case.path, load_and_fit(case.path, "diagnose"))
     pooled = case.output
     assert (alone["verdict"], alone["cause"]) == (pooled["verdict"], pooled["cause"])
-    key = lambda c: (c["name"], c["form"], c["delta_bic"], c["heldout_ratio"])  # noqa: E731
-    assert [key(c) for c in alone["candidates"]] == [key(c) for c in pooled["candidates"]]
+    assert [(c["name"], c["form"]) for c in alone["candidates"]] == [(c["name"], c["form"]) for c in pooled["candidates"]]
+    for a, b in zip(alone["candidates"], pooled["candidates"]):
+        assert a["delta_bic"] == pytest.approx(b["delta_bic"], rel=1e-9, abs=1e-9)
+        assert a["heldout_ratio"] == pytest.approx(b["heldout_ratio"], rel=1e-9)
