@@ -319,19 +319,22 @@ def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tup
 class _Scorer:
     """Fits and scores extensions on one round of forward selection (the reference refit made once)."""
 
-    def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_held: dict, refit_mechanics: bool):
+    def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_held: dict, refit_mechanics: bool,
+                 valley: dict | None = None):
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
+        self.valley = valley  # the electrical stage's loosest direction (nuisance.py)
         rms = block_rms(base_held)
         self.accuracy = attainable_accuracy(ctx_held)
         self.where = missed(rms, self.accuracy)  # where the base misses the held-out records: the error is measured there
         self.base_heldout = heldout_error(rms, self.where, self.accuracy)
         self.refit_mechanics = refit_mechanics  # first round only: later rounds keep the accepted mechanics
         self._ref: tuple[float, float] | None = None
+        self.reference_fit: Refit | None = None
 
     def reference(self) -> tuple[float, float]:
         """(chi2 on the fitted half, held-out NRMSE) of the baseline with its mechanics refitted."""
         if self._ref is None:
-            r = refit(None, self.ctx_fit, self.ctx_held, blocks, [])
+            r = self.reference_fit = refit(None, self.ctx_fit, self.ctx_held, blocks, [], self.valley)
             c_ref = chi2(blocks(baseline(r.ctx_fit), r.ctx_fit))[0]
             self._ref = (c_ref, nrmse(blocks(baseline(r.ctx_held), r.ctx_held), self.where, self.accuracy))
         return self._ref
@@ -365,7 +368,7 @@ class _Scorer:
             ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
             dbic = c - self.c0 + len(th) * math.log(max(self.n, 2))
             return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio, held=held, ext=ext)
-        r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext))
+        r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext), self.valley)
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]
         held = blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held)
         h = nrmse(held, self.where, self.accuracy)
@@ -376,9 +379,13 @@ class _Scorer:
 
 
 def _score(ctx_fit: Context, ctx_held: Context, names: list[str], c0: float, n: int, base_held: dict,
-           refit_mechanics: bool = False) -> list[Candidate]:
-    scorer = _Scorer(ctx_fit, ctx_held, c0, n, base_held, refit_mechanics)
-    if refit_mechanics and any(ext.refit_mechanics for name in names for ext in FAMILIES[name]):
+           refit_mechanics: bool = False, valley: dict | None = None) -> list[Candidate]:
+    return _rank(_Scorer(ctx_fit, ctx_held, c0, n, base_held, refit_mechanics, valley), names)
+
+
+def _rank(scorer: _Scorer, names: list[str]) -> list[Candidate]:
+    """Every effect of ``names`` scored in its family's best form, by DeltaBIC."""
+    if scorer.refit_mechanics and any(ext.refit_mechanics for name in names for ext in FAMILIES[name]):
         scorer.reference()  # once, before the workers fork: each would refit it otherwise
     # the largest families first (their cost grows with their forms), so that no worker is left with one at the end
     order = sorted(names, key=lambda name: -len(FAMILIES[name]))
@@ -449,8 +456,9 @@ def split(feats: Features) -> tuple[set, set]:
     return {None, *ps}, {None, *ps}
 
 
-def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
-    """Verdict, cause and gain for a session on top of the baseline strip per pressure (``baseline_specimens``)."""
+def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> dict[str, Any]:
+    """Verdict, cause and gain for a session on top of the baseline strip per pressure (``baseline_specimens``);
+    ``valley``: the electrical stage's loosest direction (``Seed000Fit.staged_valley``, nuisance.py)."""
     t0 = time.perf_counter()
     feats = extract(sd)
     fit_set, held_set = split(feats)
@@ -464,7 +472,8 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
     accuracy = attainable_accuracy(ctx_held)  # the prior, or the session's own noise where that is larger
     where = missed(held_rms, accuracy)
     base_heldout = heldout_error(held_rms, where, accuracy)
-    cands = _score(ctx_fit, ctx_held, list(CATALOGUE), c0, n, b_held, refit_mechanics=True)
+    scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley)
+    cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain
@@ -487,7 +496,17 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         accepted.append(rest[0])
     c_all, n_all = chi2({**{f"f_{k}": v for k, v in b_fit.items()}, **({} if same else {f"h_{k}": v for k, v in b_held.items()})})
     dof_chi2 = c_all / max(n_all, 1)
-    structure = structured(held_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
+    # the baseline the verdict reads: the staged fit, or the same strip with its loose parameters refitted within their
+    # uncertainty (nuisance.py) where that predicts the held-out half better: a misfit its own parameters' error
+    # explains is the baseline's accuracy on this session, not structure (docs/diagnosis.md, "Verdict")
+    verdict_held, verdict_ctx, refitted = b_held, ctx_held, None
+    ref = scorer.reference_fit
+    if ref is not None:
+        ref_held = blocks(baseline(ref.ctx_held), ref.ctx_held)
+        if heldout_error(block_rms(ref_held), None, accuracy) < heldout_error(held_rms, None, accuracy):
+            verdict_held, verdict_ctx, refitted = ref_held, ref.ctx_held, ref.params()
+    verdict_rms = block_rms(verdict_held)
+    structure = structured(verdict_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
     if clock["flagged"]:
@@ -510,12 +529,12 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         verdict, cause, confidence = "unexplained", None, 1.0
     else:
         verdict, cause = "none", None
-        worst = max((held_rms[k] / accuracy[k] for k in held_rms), default=0.0)
+        worst = max((verdict_rms[k] / accuracy[k] for k in verdict_rms), default=0.0)
         confidence = float(min(1.0, 1.0 - (worst - 1.0) / (STRUCTURE_MARGIN - 1.0))) if worst > 1.0 else 1.0
     # where the remaining misfit sits: the baseline's, or what the accepted effects leave on the held-out half
     if accepted and adopted < len(accepted):
         cf, ch = _adopt(accepted[-1], cf, ch)
-    residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(b_held, ctx_held, accuracy)
+    residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(verdict_held, verdict_ctx, accuracy)
     if clock["flagged"]:
         residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
@@ -538,7 +557,9 @@ def diagnose(sd: SessionData, specimens: dict) -> dict[str, Any]:
         ],
         "baseline": {"heldout_nrmse": base_heldout, "chi2_per_point": dof_chi2, "blocks": held_rms, "missed": sorted(where),
                      "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY},
-                     "accuracy": {k: accuracy[k] for k in held_rms}, "noise_level": noise_levels(ctx_held)},
+                     "accuracy": {k: accuracy[k] for k in held_rms}, "noise_level": noise_levels(ctx_held),
+                     # the loose parameters refitted within their uncertainty, where that is the verdict's baseline
+                     "refitted": None if refitted is None else {"params": refitted, "blocks": verdict_rms}},
         "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "clock": clock,

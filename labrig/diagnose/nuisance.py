@@ -10,6 +10,14 @@ their own and not the refit's.
 Held out: alpha, gamma and the extension's parameters come from the fitted half; K_t bar of a held-out
 pressure is a per-pressure nuisance (the baseline fit also took it from those records) and is refitted there
 on the sine records alone, with everything else fixed.
+
+The electrical values may move too, along one line: the electrical stage's shallowest valley, the line resistance R
+with the values correlated with it (the clamp's R_c, the CPEs) following (``Seed000Fit.staged_valley``), in units of
+R's standard error and held to the stage's estimate by a unit Gaussian prior. The spectra and the current leave R
+loosest of the electrical values (20 % standard error on the seed-001 strip, correlation -0.99 with R_c), and an R
+two of those off reshapes the displacement FRF by 1-2 % at every pressure, as a sensor offset does (fresh5's clean
+seed 72: R 37 % high, named sensor_offset at 0.46). With the valley free the current FRF and the spectra join the
+residual: they, not the displacement, tell where along it the strip sits. Without a valley (no spectra) it stays put.
 """
 
 from __future__ import annotations
@@ -22,11 +30,14 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from labrig.diagnose.catalogue import Context, Extension, Prediction, baseline, frf_by_pressure
-from labrig.diagnose.features import predict_step, specimen_for
+from labrig.diagnose.features import predict_sines, predict_step, specimen_for
+from labrig.fit.seed000_problem import shifted
+from labrig.physics.impedance import impedance
 
-NUISANCE_BLOCKS = ("frf_d", "harm_d")  # what alpha, gamma and K_t bar can change
+NUISANCE_BLOCKS = ("frf_d", "harm_d", "frf_i", "eis")  # what the mechanics (the first two) and the valley (all) change
 LOG_BOUND_GLOBAL = 1.5  # alpha and gamma within a factor e^1.5 of the fitted values
 LOG_BOUND_KT = 0.7
+VALLEY_BOUND = 3.0  # the electrical values within this many of R's standard errors along the valley
 
 
 @dataclass
@@ -37,26 +48,40 @@ class Refit:
     log_kt: dict[float, float]  # per pressure, fitted and held-out halves together
     ctx_fit: Context
     ctx_held: Context
+    valley_sd: float = 0.0  # where along the electrical stage's valley, in standard errors of R
+    valley: dict = dataclasses.field(default_factory=dict)
 
     def params(self) -> dict[str, float]:
-        return {"alpha_factor": math.exp(self.log_alpha), "gamma_factor": math.exp(self.log_gamma),
+        return {"alpha_factor": math.exp(self.log_alpha), "gamma_factor": math.exp(self.log_gamma), "electrical_valley_sd": self.valley_sd,
                 **{f"Kt_factor_{p:g}kPa": math.exp(v) for p, v in sorted(self.log_kt.items())}}
 
 
-def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dict[float, float], steps: bool = True) -> Context:
-    """A copy of ``ctx`` whose baseline predictions use rescaled mechanics (steps left out if not ``steps``).
-
-    Effects accepted earlier (``ctx.chain``) are re-applied on the new baseline.
+def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dict[float, float], steps: bool = True,
+                   valley_sd: float = 0.0, valley: dict | None = None) -> Context:
+    """A copy of ``ctx`` whose baseline predictions use rescaled mechanics and electrical values moved ``valley_sd``
+    along ``valley`` (steps left out if not ``steps``). Effects accepted earlier (``ctx.chain``) are re-applied on
+    the new baseline.
     """
     specimens = {}
+    moved = bool(valley_sd and valley)
     for p, sp in ctx.specimens.items():
         m = sp.mechanics
         mech = dataclasses.replace(m, alpha=m.alpha * math.exp(log_alpha), gamma=m.gamma * math.exp(log_gamma))
+        sp = shifted(sp, p, valley, valley_sd) if moved else sp
         specimens[p] = sp.with_(Kt_bar=sp.Kt_bar * math.exp(log_kt.get(p, 0.0)), mechanics=mech)
     f3 = [dataclasses.replace(s, f=3 * s.f) for s in ctx.sines]
     new = dataclasses.replace(ctx, specimens=specimens, Hd=frf_by_pressure(ctx.sines, specimens), Hd3=frf_by_pressure(f3, specimens), base=None, cache={})
+    if moved:  # the electrical path too: the current and the spectra
+        new.Hi = ctx.Hi.copy()
+        for q in {s.pressure_kPa for s in ctx.sines}:
+            idx = [k for k, s in enumerate(ctx.sines) if s.pressure_kPa == q]
+            new.Hi[idx] = predict_sines(specimen_for(specimens, q), [ctx.sines[k] for k in idx])[1]
+        new.spectra = [(s, impedance(2j * np.pi * s.f, specimen_for(specimens, s.pressure_kPa))) for s, _ in ctx.spectra]
     if steps:
-        new.step_d = [predict_step(specimen_for(specimens, st.pressure_kPa), st)[0] for st in ctx.steps]
+        both = [predict_step(specimen_for(specimens, st.pressure_kPa), st) for st in ctx.steps]
+        new.step_d = [d for d, _ in both]
+        if moved:
+            new.step_i = [i for _, i in both]
     else:
         new.steps, new.step_d, new.step_i = [], [], []
     for ext, th in ctx.chain:
@@ -64,39 +89,44 @@ def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dic
     return new
 
 
-def with_fitted_mechanics(ctx: Context, params: dict[str, float]) -> Context:
+def with_fitted_mechanics(ctx: Context, params: dict[str, float], valley: dict | None = None) -> Context:
     """``ctx`` with the mechanics a refitted extension reported (``Refit.params`` names; none: unchanged)."""
     if "alpha_factor" not in params:
         return ctx
     kt = {p: math.log(params[f"Kt_factor_{p:g}kPa"]) for p in ctx.specimens if f"Kt_factor_{p:g}kPa" in params}
-    return with_mechanics(ctx, math.log(params["alpha_factor"]), math.log(params["gamma_factor"]), kt)
+    return with_mechanics(ctx, math.log(params["alpha_factor"]), math.log(params["gamma_factor"]), kt,
+                          valley_sd=params.get("electrical_valley_sd", 0.0), valley=valley)
 
 
 def _predict(ext: Extension | None, theta: np.ndarray, ctx: Context) -> Prediction:
     return baseline(ctx) if ext is None else ext.apply(theta, ctx)
 
 
-def _sine_residual(ext, theta, ctx, la, lg, lkt, blocks_fn) -> np.ndarray:
-    c = with_mechanics(ctx, la, lg, lkt, steps=False)
+def _sine_residual(ext, theta, ctx, la, lg, lkt, blocks_fn, vs: float = 0.0, valley: dict | None = None) -> np.ndarray:
+    c = with_mechanics(ctx, la, lg, lkt, steps=False, valley_sd=vs, valley=valley)
     bl = blocks_fn(_predict(ext, theta, c), c)
     return np.concatenate([bl[k][0] for k in NUISANCE_BLOCKS if k in bl])
 
 
-def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn, starts: list[np.ndarray]) -> Refit:
-    """Fit the extension (``None``: the baseline alone) with the mechanics free on the fitted half, then the
-    held-out half's K_t bar; both contexts rebuilt with the result (steps included)."""
+def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn, starts: list[np.ndarray],
+          valley: dict | None = None) -> Refit:
+    """Fit the extension (``None``: the baseline alone) with the mechanics free on the fitted half and the
+    electrical values free along ``valley`` (``Seed000Fit.staged_valley``; none: held), then the held-out half's
+    K_t bar; both contexts rebuilt with the result (steps included)."""
     p_fit = sorted({s.pressure_kPa for s in ctx_fit.sines if s.pressure_kPa is not None})
     p_held = sorted({s.pressure_kPa for s in ctx_held.sines if s.pressure_kPa is not None} - set(p_fit))
     k = 0 if ext is None else len(ext.params)
-    lo = np.r_[(ext.lo if ext else ()), -LOG_BOUND_GLOBAL, -LOG_BOUND_GLOBAL, [-LOG_BOUND_KT] * len(p_fit)]
-    hi = np.r_[(ext.hi if ext else ()), LOG_BOUND_GLOBAL, LOG_BOUND_GLOBAL, [LOG_BOUND_KT] * len(p_fit)]
+    vb = VALLEY_BOUND if valley else 1e-9  # without a valley the coordinate is pinned (least_squares needs lo < hi)
+    lo = np.r_[(ext.lo if ext else ()), -LOG_BOUND_GLOBAL, -LOG_BOUND_GLOBAL, -vb, [-LOG_BOUND_KT] * len(p_fit)]
+    hi = np.r_[(ext.hi if ext else ()), LOG_BOUND_GLOBAL, LOG_BOUND_GLOBAL, vb, [LOG_BOUND_KT] * len(p_fit)]
 
     def res(x: np.ndarray) -> np.ndarray:
-        return _sine_residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 2 :])), blocks_fn)
+        fit = _sine_residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 3 :])), blocks_fn, x[k + 2], valley)
+        return np.r_[fit, x[k + 2]]  # the electrical stage's own estimate, one standard error a unit
 
     best, cost = None, np.inf
     for th0 in starts or [np.zeros(0)]:
-        x0 = np.clip(np.r_[th0, 0.0, 0.0, [0.0] * len(p_fit)], lo, hi)
+        x0 = np.clip(np.r_[th0, 0.0, 0.0, 0.0, [0.0] * len(p_fit)], lo, hi)
         try:
             r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50)
         except (ValueError, FloatingPointError):
@@ -104,16 +134,16 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
         if np.isfinite(r.cost) and r.cost < cost:
             best, cost = r.x, r.cost
     if best is None:
-        best = np.r_[starts[0] if starts else np.zeros(0), 0.0, 0.0, [0.0] * len(p_fit)]
-    theta, la, lg = best[:k], float(best[k]), float(best[k + 1])
-    lkt = dict(zip(p_fit, map(float, best[k + 2 :])))
+        best = np.r_[starts[0] if starts else np.zeros(0), 0.0, 0.0, 0.0, [0.0] * len(p_fit)]
+    theta, la, lg, vs = best[:k], float(best[k]), float(best[k + 1]), float(best[k + 2]) if valley else 0.0
+    lkt = dict(zip(p_fit, map(float, best[k + 3 :])))
     if p_held:
         def res_h(x: np.ndarray) -> np.ndarray:
-            return _sine_residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn)
+            return _sine_residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn, vs, valley)
 
         rh = least_squares(res_h, np.zeros(len(p_held)), bounds=(-LOG_BOUND_KT, LOG_BOUND_KT), x_scale="jac", max_nfev=40)
         lkt.update(zip(p_held, map(float, rh.x)))
     same = ctx_held is ctx_fit
-    cf = with_mechanics(ctx_fit, la, lg, lkt)
-    ch = cf if same else with_mechanics(ctx_held, la, lg, lkt)
-    return Refit(theta, la, lg, lkt, cf, ch)
+    cf = with_mechanics(ctx_fit, la, lg, lkt, valley_sd=vs, valley=valley)
+    ch = cf if same else with_mechanics(ctx_held, la, lg, lkt, valley_sd=vs, valley=valley)
+    return Refit(theta, la, lg, lkt, cf, ch, vs, dict(valley or {}))

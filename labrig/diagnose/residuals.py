@@ -101,7 +101,8 @@ def heldout_context(sd: SessionData, specimens: dict, feats: Features | None = N
     return engine.build_context(feats, specimens, held_set), held_set, fit_set == held_set
 
 
-def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], feats: Features | None = None) -> HeldoutResiduals | None:
+def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], feats: Features | None = None,
+                      valley: dict | None = None) -> HeldoutResiduals | None:
     """Per-block held-out residuals of the baseline and of ``result``'s extension (``result["extended"]``).
 
     None when the diagnosis had nothing to compare (no sine or step records) or names no extension."""
@@ -114,7 +115,7 @@ def heldout_residuals(sd: SessionData, specimens: dict, result: dict[str, Any], 
     ctx, held, same = heldout_context(sd, specimens, feats)
     accuracy = engine.attainable_accuracy(ctx)
     before = engine.blocks(baseline(ctx), ctx)
-    after_ctx = with_fitted_mechanics(ctx, ext_info["params"])  # refitted extensions carry their mechanics
+    after_ctx = with_fitted_mechanics(ctx, ext_info["params"], valley)  # refitted extensions carry their mechanics
     after = engine.blocks(ext.apply(theta, after_ctx), after_ctx)
     out = []
     for key, (b, _) in before.items():

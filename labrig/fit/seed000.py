@@ -94,6 +94,10 @@ class Seed000Fit:
     # held. A misfit of the displacement path cannot bend the electrical values here (the joint fit's R_cont
     # can), so the diagnosis judges each channel against a baseline told by that channel.
     staged_specimens: dict[float, Specimen] = field(default_factory=dict)
+    # the electrical stage's loosest direction: per parameter, its change along one standard error of the line
+    # resistance R with the others following their correlation with it (a shallow valley with R_c and the CPEs),
+    # within which the diagnosis lets the displacement FRF move the staged strip (labrig/diagnose/nuisance.py)
+    staged_valley: dict[str, float] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         def pe(x: ParamEstimate | None) -> float | None:
@@ -146,6 +150,18 @@ def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> t
     if cur:
         res = Problem(priors, eis=data, cur=cur, sigma_eis=sigma).minimize(res.params)
     return res, sigma
+
+
+def valley(res: lmfit.minimizer.MinimizerResult, name: str) -> dict[str, float]:
+    """Each varied parameter's change along one standard error of ``name`` with the others at their conditional
+    best (the covariance's column over its standard deviation): the fit's shallowest valley through that parameter.
+    Empty where the fit has no covariance."""
+    cov, names = getattr(res, "covar", None), list(getattr(res, "var_names", []) or [])
+    if cov is None or name not in names:
+        return {}
+    k = names.index(name)
+    sd = math.sqrt(cov[k, k]) if cov[k, k] > 0 else 0.0
+    return {n: float(cov[j, k] / sd) for j, n in enumerate(names)} if sd and np.all(np.isfinite(cov[:, k])) else {}
 
 
 def fit_frf(data: list[PressureData], priors: dict[float, Specimen], electrical: lmfit.Parameters) -> lmfit.Parameters:
@@ -253,6 +269,7 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
     if with_eis:
         res, fit.eis_noise_rel = fit_electrical(with_eis, priors)
         final = res.params
+        fit.staged_valley = valley(res, "log_R")
         fit.staged_specimens = _specimens(priors, final)
     else:
         fit.notes.append("no impedance spectrum: contact resistance and Table 1 values cannot be told (null)")

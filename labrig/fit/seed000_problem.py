@@ -56,6 +56,24 @@ def clamp_name(key: str, p: float) -> str:
     return f"R_cont_{tag(p)}" if key == "r_cont" else (f"n_c_{tag(p)}" if key == "n_c" else f"log_{key}_{tag(p)}")
 
 
+def shifted(sp: Specimen, p: float, step: dict[str, float], s: float) -> Specimen:
+    """The strip at pressure p with its electrical values moved by ``s`` x ``step`` (per parameter name, on the fit's
+    own scales: log10 values multiply, the exponents n and n_c and R_cont add); names of other pressures ignored."""
+    if not s or not step:
+        return sp
+    line = {}
+    for k, n in LINE_NAMES.items():
+        if n in step:
+            line[k] = getattr(sp.line, k) + s * step[n] if k == "n" else getattr(sp.line, k) * 10 ** (s * step[n])
+    clamp = {}
+    for k in CLAMP_FREE:
+        n = clamp_name(k, p)
+        if n in step:
+            v = getattr(sp.clamp, k)
+            clamp[k] = v + s * step[n] * sp.geometry.clamp_area if k == "r_cont" else (v + s * step[n] if k == "n_c" else v * 10 ** (s * step[n]))
+    return sp.with_(line=dataclasses.replace(sp.line, **line), clamp=dataclasses.replace(sp.clamp, **clamp))
+
+
 def frf_noise(h: np.ndarray, sig: np.ndarray) -> np.ndarray:
     """Relative standard deviation per component (real, imaginary) of each FRF point: the estimators give
     that of the complex value (PressureData.frf_lines), hence the sqrt(2) (NaN sigma: 1 %)."""

@@ -95,7 +95,7 @@ def _diagnosis(data: ReportData, recompute: bool) -> None:
     try:
         from labrig.diagnose.engine import baseline_specimens
 
-        data.residuals = heldout_residuals(data.sd, baseline_specimens(data.fit), data.diagnosis, data.feats)
+        data.residuals = heldout_residuals(data.sd, baseline_specimens(data.fit), data.diagnosis, data.feats, data.fit.staged_valley)
     except (KeyError, ValueError) as exc:  # a stored diagnosis from another catalogue version
         data.missing["residuals"] = f"The held-out residuals could not be rebuilt from the stored diagnosis ({exc}); rerun with --recompute."
     if data.residuals is None and "residuals" not in data.missing:
