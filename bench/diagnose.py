@@ -22,8 +22,12 @@
 * Fresh5 held-out set (``--set fresh5``, bench/inject_fresh5.py ``fresh5_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 71-73 (paper,
   seed-001, 45 mm strips) and a new data shape (time stamps stored as 32-bit floats), four clean sessions.
+* Fresh6 held-out set (``--set fresh6``, bench/inject_fresh6.py ``fresh6_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 81-83 (paper,
+  seed-001, 28 mm strips), a new data shape (each series on a clock of its own with zero at the trigger), six
+  clean sessions.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -103,7 +107,8 @@ def tuning(a) -> list:
 LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fresh held-out set (unseen)",
           "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (seen in the fifth pass)",
           "fresh4": "fresh4 held-out set (diagnosed once unseen at f5aa88a; seen since)",
-          "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)"}
+          "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)",
+          "fresh6": "fresh6 held-out set (diagnosed once unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
@@ -111,7 +116,7 @@ def validation(a, name: str = "validation") -> list:
     import inject
 
     registers = None  # the module the pool's workers must import: it registers the set's forms, bases and variants
-    if name in ("fresh2", "fresh3", "fresh4", "fresh5"):
+    if name in ("fresh2", "fresh3", "fresh4", "fresh5", "fresh6"):
         registers = f"inject_{name}"
         todo = getattr(importlib.import_module(registers), f"{name}_cases")()
     else:

@@ -1,0 +1,90 @@
+"""bench/inject_fresh6.py, the seventh held-out set: every form changes the signals its physics says and only those,
+the new variant keeps the data importable in shape, and the case list covers what the set promises. The tiny
+synthetic session of tests/test_inject_fresh2.py (no simulated run, nothing diagnosed)."""
+
+from __future__ import annotations
+
+import copy
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "bench"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import inject  # noqa: E402
+import inject_fresh2  # noqa: E402
+import inject_fresh3  # noqa: E402
+import inject_fresh4  # noqa: E402
+import inject_fresh5  # noqa: E402
+import inject_fresh6 as f6  # noqa: E402
+import test_inject_fresh2 as t2  # noqa: E402
+from test_inject_fresh2 import BASE  # noqa: E402
+
+DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
+CHANGES = {  # the columns each form must change (every other column, t_s included, stays bit for bit)
+    "coion_drift": DISP, "dead_time": DISP, "nucleation": CUR, "poisoning": CUR, "mpi_drive": DISP,
+    "baber_wen_drive": DISP, "clock_drift": DISP, "packet_stamps": DISP, "tip_flag": DISP, "root_gauge": DISP,
+    "slip_avalanches": DISP | FORCE, "edge_liftoff": DISP | CUR | FORCE, "tip_dry_front": DISP | CUR | Z,
+    "one_side_curl": DISP | CUR | Z, "crack_healing": DISP | CUR, "root_cracks": DISP | CUR, "lens_barrel": DISP,
+    "end_on_camera": DISP, "supply_ripple": CUR, "monitor_hum": {"v_V"}, "bubble_lens": DISP, "autozero": CUR,
+    "mode_hop": DISP, "footsteps": DISP,
+}
+FORMS = [(t, n, fn) for t, forms in f6.FRESH6_FORMS.items() for n, fn in forms.items()]
+
+
+@pytest.mark.parametrize("truth,name,fn", FORMS, ids=[n for _, n, _ in FORMS])
+def test_form_changes_its_signals_only(truth, name, fn, monkeypatch):
+    """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
+    columns of CHANGES changed, displacement and current visibly) with this set's columns."""
+    monkeypatch.setattr(t2, "CHANGES", CHANGES)
+    t2.test_form_changes_its_signals_only(truth, name, fn)
+
+
+def test_monitor_hum_is_on_the_voltage_channel():
+    s = copy.deepcopy(BASE)
+    s.rng = np.random.default_rng(7)
+    f6.mp_monitor_hum(s)
+    q = 10.0 / 32768
+    for a, b in zip(BASE.series(), s.series()):
+        dv = b.cols["v_V"] - a.cols["v_V"]
+        assert 2e-4 < np.sqrt(np.mean(dv**2)) < 2e-3  # 0.5-2 mV peak of hum, read at the channel's step
+        np.testing.assert_allclose(b.cols["v_V"] / q, np.round(b.cols["v_V"] / q), atol=1e-6)
+
+
+def test_forms_are_registered_and_new(monkeypatch):
+    """tests/test_inject_fresh2.py's check (each form found by inject.form_of, none named as in bench/inject.py) with
+    this set's forms, and no name of fresh2 to fresh5 either."""
+    monkeypatch.setattr(t2, "FORMS", FORMS)
+    monkeypatch.setattr(t2, "CHANGES", CHANGES)
+    t2.test_forms_are_registered_and_new()
+    earlier = {n for d in (inject_fresh2.FRESH2_FORMS, inject_fresh3.FRESH3_FORMS, inject_fresh4.FRESH4_FORMS,
+                           inject_fresh5.FRESH5_FORMS) for forms in d.values() for n in forms}
+    assert not earlier & set(CHANGES)
+
+
+def test_trigger_clock():
+    s = copy.deepcopy(BASE)
+    f6.v_trigger_clock(s)
+    assert [r.entry for r in s.recs] == [r.entry for r in BASE.recs]
+    for a, b in zip(BASE.series(), s.series()):
+        t = b.cols["t_s"]
+        assert np.all(np.diff(t) > 0) and t[0] <= 0.0 <= t[-1]
+        np.testing.assert_allclose(np.diff(t), np.diff(a.cols["t_s"]), atol=1e-9)
+        assert all(np.array_equal(a.cols[k], b.cols[k]) for k in a.cols if k != "t_s")
+        if a.kind == "step":  # zero at the edge: the first sample at half the step
+            k = int(np.argmin(np.abs(t)))
+            assert b.cols["v_V"][k] >= 0.5 > b.cols["v_V"][k - 1]
+
+
+def test_case_list():
+    cases = f6.fresh6_cases()
+    assert len(cases) == len({c.name for c in cases}) == 34
+    assert {c.seed for c in cases} == {81, 82, 83} and {c.base for c in cases} <= set(inject.BASES)
+    assert {c.variant for c in cases} <= set(inject.VARIANTS) and "trigger_clock" in {c.variant for c in cases}
+    for truth, forms in f6.FRESH6_FORMS.items():
+        got = sorted(c.form for c in cases if c.truth == truth)
+        assert got == sorted(list(forms) * (2 if truth == "unexplained" else 1)), truth
+    assert len([c for c in cases if c.truth == "none"]) == 6
+    assert [c.name for c in f6.fresh6_cases("none")] == [c.name for c in cases if c.truth == "none"]
