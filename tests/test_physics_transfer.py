@@ -126,3 +126,18 @@ def test_interpolated_grid_matches_exact_evaluation():
     finally:
         timeresp._EXACT_BINS = saved
     assert np.max(np.abs(fast - exact)) < 1e-6 * np.max(np.abs(exact))
+
+
+@pytest.mark.parametrize("lever_over_L", [0.2, -0.3])
+def test_a_flag_at_the_tip_reads_the_strip_and_its_tangent(lever_over_L):
+    """``sensor_lever``: a rigid flag fixed at the tip reads w(L) + e w'(L). The slope from a one-sided difference of
+    the spot's position (w''(L) = 0 at a free end, so the difference is exact to O(h^2)); a flag beyond the tip
+    reads more than the tip at low frequency, one towards the root less."""
+    f = np.geomspace(0.1, 20, 12)
+    L = SP.geometry.length
+    e, h = lever_over_L * L, 1e-5 * L
+    tip = transfer.frf(f, SP)
+    slope = (tip - transfer.frf(f, SP.with_(sensor_x=L - h))) / h
+    flag = transfer.frf(f, SP.with_(sensor_lever=e))
+    np.testing.assert_allclose(flag, tip + e * slope, rtol=2e-4)
+    assert (abs(flag[0]) > abs(tip[0])) == (e > 0)

@@ -22,7 +22,7 @@ from labrig.diagnose.artefacts import artefacts, detail as artefact_detail, leve
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
-from labrig.diagnose.nuisance import Refit, refit
+from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.estimate.session_data import SessionData
@@ -501,7 +501,9 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     # explains is the baseline's accuracy on this session, not structure (docs/diagnosis.md, "Verdict")
     verdict_held, verdict_ctx, refitted = b_held, ctx_held, None
     ref = scorer.reference_fit
-    if ref is not None:
+    # pinned at the valley's bound, the data want the electrical values further off than their uncertainty allows:
+    # that misfit is not the baseline's own error
+    if ref is not None and abs(ref.valley_sd) < 0.99 * VALLEY_BOUND:
         ref_held = blocks(baseline(ref.ctx_held), ref.ctx_held)
         if heldout_error(block_rms(ref_held), None, accuracy) < heldout_error(held_rms, None, accuracy):
             verdict_held, verdict_ctx, refitted = ref_held, ref.ctx_held, ref.params()

@@ -22,9 +22,9 @@ import numpy as np
 from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
-                                      creep_since_first_record, follow_force, played_drive)
+                                      creep_since_first_record, follow_force, frf_by_pressure, played_drive)
 from labrig.diagnose.arc import curled_arc
-from labrig.diagnose.features import LINE_HZ
+from labrig.diagnose.features import LINE_HZ, predict_step, specimen_for
 from labrig.physics import timeresp
 
 _N = 64
@@ -412,6 +412,18 @@ def _lag(th, ctx: Context):
     return p
 
 
+def _flag(th, ctx: Context):
+    """The laser reads a rigid flag or reflective tab fixed at the tip, ``lever`` beyond it along the tangent:
+    w(L) + e w'(L) (``Specimen.sensor_lever``); negative e reads along the tangent towards the root."""
+    (e,) = th
+    p = baseline(ctx)
+    at = {q: sp.with_(sensor_lever=e * ctx.length) for q, sp in ctx.specimens.items()}
+    p.Hd = frf_by_pressure(ctx.sines, at)
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k] = predict_step(specimen_for(at, st.pressure_kPa), st)[0]
+    return p
+
+
 def _form(base: str, form: str, params, x0, lo, hi, apply, describe, **kw) -> Extension:
     return Extension(base, params, x0, lo, hi, apply, describe, form=form, **kw)
 
@@ -518,6 +530,10 @@ FAMILIES["mains_pickup"] += [
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",
           refit_mechanics=True),
+]
+FAMILIES["sensor_offset"] += [
+    _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
+          "a rigid flag at the tip read lever e beyond it, w(L) + e w'(L) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),

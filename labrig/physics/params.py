@@ -95,6 +95,9 @@ class Specimen:
     pressure: float | None = None  # Pa, clamping pressure this state belongs to (None: not from a law)
     n_modes: int = 10
     sensor_x: float | None = None  # m, laser spot position; None = the tip (x = L)
+    # m: the sensor reads a rigid flag or target fixed to the strip at sensor_x, this far beyond it along the strip's
+    # tangent: w(x) + lever w'(x) (a reflective tab past the tip, docs/diagnosis.md "Families"); 0 = the strip itself
+    sensor_lever: float = 0.0
     charge: Literal["capacitive", "total"] = "capacitive"  # which current charges the strip, docs/model.md 4.2
     modal_force: Literal["virtual_work", "paper"] = "virtual_work"  # docs/model.md 4.3
 

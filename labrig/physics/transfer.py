@@ -57,8 +57,9 @@ def damping_ratio(omega: np.ndarray, sp: Specimen) -> np.ndarray:
 
 
 @lru_cache(maxsize=1024)
-def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float) -> tuple[np.ndarray, ...]:
-    """Roots and mode shapes on the quadrature nodes: they depend on K_t bar and the geometry only."""
+def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float, lever: float = 0.0) -> tuple[np.ndarray, ...]:
+    """Roots and mode shapes on the quadrature nodes: they depend on K_t bar and the geometry only. The sensor's
+    shape is phi(x) + lever phi'(x): a rigid flag ``lever`` beyond the spot along the tangent (0: the strip)."""
     L = length
     bl = beam.beta_L_roots(Kt_bar, n_modes)
     u, w = _LEGENDRE
@@ -67,6 +68,8 @@ def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float) -> tupl
     phi2 = beam.mode_shapes(nodes, L, bl, Kt_bar, 2)
     norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
     phi_s = beam.mode_shapes(np.array([x_sensor]), L, bl, Kt_bar)[0] / norm
+    if lever:
+        phi_s = phi_s + lever * beam.mode_shapes(np.array([x_sensor]), L, bl, Kt_bar, 1)[0] / norm
     return bl, nodes, weights, phi / norm, phi2 / norm, phi_s
 
 
@@ -74,7 +77,7 @@ def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float) -> tupl
 def modal_set(sp: Specimen) -> ModalSet:
     g, m = sp.geometry, sp.mechanics
     L = g.length
-    bl, nodes, weights, phi, phi2, phi_s = _shapes(float(sp.Kt_bar), int(sp.n_modes), L, float(sp.x_sensor))
+    bl, nodes, weights, phi, phi2, phi_s = _shapes(float(sp.Kt_bar), int(sp.n_modes), L, float(sp.x_sensor), float(sp.sensor_lever))
     omega = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(1.0, sp), L)
     for _ in range(30):  # fixed point: the added mass depends on the frequency it loads
         new = beam.natural_frequency(bl, m.E, g.second_moment, mu_v(omega, sp), L)
