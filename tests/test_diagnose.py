@@ -77,14 +77,14 @@ def test_the_drying_and_creep_families_contain_their_simpler_forms():
     catalogue's single exponential at w = 1, and two exponentials at ratio k otherwise."""
     import numpy as np
 
-    from labrig.diagnose import families
+    from labrig.diagnose import families, slow_forms
 
     u = np.linspace(0, 1, 21)
-    np.testing.assert_allclose(families._power(u, (1.0,)), families._linear(u, ()), rtol=0, atol=1e-15)
-    np.testing.assert_allclose(families._power(u, (0.5,)), np.sqrt(u), rtol=1e-12)
+    np.testing.assert_allclose(slow_forms.power(u, (1.0,)), slow_forms.linear(u, ()), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(slow_forms.power(u, (0.5,)), np.sqrt(u), rtol=1e-12)
     x = np.linspace(0, 30, 31)
-    np.testing.assert_allclose(families._two_arm_creep(x, (10.0, 1.0)), 1 - np.exp(-x), rtol=1e-12)
-    np.testing.assert_allclose(families._two_arm_creep(x, (10.0, 0.3)), 0.3 * (1 - np.exp(-x)) + 0.7 * (1 - np.exp(-x / 10)), rtol=1e-12)
+    np.testing.assert_allclose(slow_forms.two_arm_creep(x, (10.0, 1.0)), 1 - np.exp(-x), rtol=1e-12)
+    np.testing.assert_allclose(slow_forms.two_arm_creep(x, (10.0, 0.3)), 0.3 * (1 - np.exp(-x)) + 0.7 * (1 - np.exp(-x / 10)), rtol=1e-12)
     names = {e.form for e in families.FAMILIES["dehydration"]} | {e.form for e in families.FAMILIES["clamp_relaxation"]}
     assert {"power", "two_arm"} <= names
     for ext in families.FAMILIES["dehydration"] + families.FAMILIES["clamp_relaxation"]:
@@ -138,11 +138,11 @@ def test_the_fourth_pass_forms_follow_their_physics():
     4 v_t c on a sweep across it and none back at rest."""
     import numpy as np
 
-    from labrig.diagnose import families
+    from labrig.diagnose import families, slow_forms
     from labrig.diagnose.features import Features
 
     u = np.linspace(0, 1, 2001)
-    x = families._falling_rate(u, (0.3, 0.8))
+    x = slow_forms.falling_rate(u, (0.3, 0.8))
     assert x[0] == 0 and abs(x[-1] - 1) < 1e-12 and np.all(np.diff(x) > 0)
     rate = np.gradient(x, u)
     k = np.searchsorted(u, 0.3)
@@ -240,7 +240,7 @@ def test_the_fifth_pass_forms_follow_their_physics():
     the top pressure first and a quarter of it (n = 3) four times slower at half of it, the exponential at n -> 1."""
     import numpy as np
 
-    from labrig.diagnose import families
+    from labrig.diagnose import families, slow_forms
 
     def gain(form, th, drive):
         ctx = _drive_context(drive)
@@ -255,10 +255,10 @@ def test_the_fifth_pass_forms_follow_their_physics():
     assert gain(families._pi_output, (0.0, 400.0, 1.0), 0.1) == pytest.approx(1.0)
 
     x = np.linspace(0, 5, 11)
-    top, half = families.norton_relaxed(x, 1.0, 3.0), families.norton_relaxed(x, 0.5, 3.0)
-    np.testing.assert_allclose(families.norton_relaxed(4 * x, 0.5, 3.0), top, rtol=1e-12)  # (1/2)^(n-1) = 1/4
+    top, half = slow_forms.norton_relaxed(x, 1.0, 3.0), slow_forms.norton_relaxed(x, 0.5, 3.0)
+    np.testing.assert_allclose(slow_forms.norton_relaxed(4 * x, 0.5, 3.0), top, rtol=1e-12)  # (1/2)^(n-1) = 1/4
     assert np.all(half[1:] > top[1:])
-    np.testing.assert_allclose(families.norton_relaxed(x, 0.3, 1.0 + 1e-7), np.exp(-x), rtol=1e-4)
+    np.testing.assert_allclose(slow_forms.norton_relaxed(x, 0.3, 1.0 + 1e-7), np.exp(-x), rtol=1e-4)
 
 
 def test_a_cause_must_reach_every_structured_block():

@@ -11,9 +11,12 @@ names the effect by its signature; the form found is reported (``extended.form``
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side); Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter) |
+| sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian) |
-| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell) |
+| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
+
+The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``.
 """
 
 from __future__ import annotations
@@ -21,8 +24,9 @@ from __future__ import annotations
 import numpy as np
 from scipy.signal import lfilter
 
-from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline,
-                                      creep_since_first_record, follow_force, frf_by_pressure, played_drive)
+from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, frf_by_pressure,
+                                      played_drive)
+from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc
 from labrig.diagnose.features import LINE_HZ, predict_step, specimen_for
 from labrig.physics import timeresp
@@ -227,135 +231,6 @@ def _strain_modulation(th, ctx: Context):
     return p
 
 
-# ------------------------------------------------------------------------------------------ drying
-
-
-def _drying(loss):
-    """Water loss over the session, ``loss(t, sh, ctx)`` in 0..1 at rig time t: the displacement's gain falls by
-    k_d x and the conductance by k_i x (one loss of water: the mobile ions' share dries with it, more slowly or
-    faster), each from a level of its own. The level is free because the baseline's alpha and electrical values
-    were fitted on data already drying: they hold the session's average, not the wet strip."""
-
-    def apply(th, ctx: Context):
-        lev_d, k_d, lev_i, k_i, *sh = th
-        p = baseline(ctx)
-        for k, s in enumerate(ctx.sines):
-            x = loss(np.array(s.t_start), sh, ctx)
-            p.Hd[k] *= lev_d * (1 - k_d * x)
-            p.Hi[k] *= lev_i * (1 - k_i * x)
-        for k, st in enumerate(ctx.steps):
-            x = loss(st.t_start + (st.t - st.t[0]), sh, ctx)  # the loss runs on during a long step record
-            p.step_d[k] = p.step_d[k] * lev_d * (1 - k_d * x)
-            p.step_i[k] = p.step_i[k] * lev_i * (1 - k_i * x)
-        return p
-
-    return apply
-
-
-def _session_time(shape):
-    """A loss that follows the clock: shape(u) of u, the session's time over its span."""
-
-    def loss(t, sh, ctx: Context):
-        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-        return shape(np.clip((t - ctx.feats.t0) / span, 0.0, 1.0), sh)
-
-    return _drying(loss)
-
-
-def _by_charge(t, sh, ctx: Context):
-    """Electro-osmotic drying: the hydrated cations drag water to the cathode, where it leaves the polymer, so the
-    strip dries while it is driven, with the charge passed (Q = int |i| dt over the session's records, in the
-    order they ran), beside the clock's evaporation: x = (1 - a) u + a Q(t)/Q_end."""
-    (a,) = sh
-    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-    return (1 - a) * np.clip((t - ctx.feats.t0) / span, 0.0, 1.0) + a * ctx.feats.charge_share(t)
-
-
-def _linear(u, sh):
-    """Zero order: evaporation at a constant vapour-pressure deficit removes water at a constant rate."""
-    return u
-
-
-def _saturating(u, sh):
-    """First order towards the room's equilibrium water content, time constant tau (in session spans)."""
-    (tau,) = sh
-    return -np.expm1(-u / tau) / -np.expm1(-1.0 / tau)
-
-
-def _power(u, sh):
-    """Diffusion-limited loss: water leaving through a skin that thickens as it dries goes as a power of time,
-    u^n (Fick: n = 1/2 while the strip's core is still wet; n = 1: zero order, n > 1: a loss that speeds up)."""
-    (n,) = sh
-    return u**n
-
-
-def _falling_rate(u, sh):
-    """The classic drying curve: a constant-rate period (surface water leaving at a fixed rate) up to the critical
-    moisture at u_c, then a falling-rate period in which the rate is proportional to the water still removable,
-    approaching it exponentially with the rate continuous at u_c; m is the removable water left at u_c over the
-    water lost by then. Normalised to 1 at the session's end."""
-    uc, m = sh
-    f = lambda x: np.where(x < uc, x / uc, 1.0 + m * -np.expm1(-(x - uc) / (uc * m)))  # noqa: E731
-    return f(u) / f(np.array(1.0))
-
-
-# ------------------------------------------------------------------------------------------ clamp creep
-
-
-def _creep(shape):
-    """The clamp's force relaxes as the polymer under it creeps, F/F0 = 1 - r c(t / tau), t from the pressure's
-    first record; K_t bar and the gain follow the force the load cell reads (as ``catalogue._clamp_relaxation``)."""
-
-    def apply(th, ctx: Context):
-        loss, tau, b_kt, b_gain, *sh = th
-        p = baseline(ctx)
-        p.force_rel[:] = -loss * shape(creep_since_first_record(ctx) / tau, sh)
-        follow_force(p, ctx, b_kt, b_gain)
-        return p
-
-    return apply
-
-
-def _log_creep(x, sh):
-    """A flat spectrum of relaxation times (a glassy polymer): the force falls with log time, ln(1 + t/tau)."""
-    return np.log1p(x)
-
-
-def _power_creep(x, sh):
-    """Nutting's law (t/tau)^n, 0 < n < 1: a power-law spectrum of relaxation times (scale-free creep)."""
-    (n,) = sh
-    return x**n
-
-
-def _two_arm_creep(x, sh):
-    """A generalised Maxwell clamp with two arms: a fast share w relaxing with tau and the rest ``ratio`` times
-    slower (a polymer's two relaxation processes: chain slip, then the bulk's viscous flow)."""
-    ratio, w = sh
-    return w * -np.expm1(-x) + (1.0 - w) * -np.expm1(-x / ratio)
-
-
-def _norton(th, ctx: Context):
-    """Power-law (Norton) creep of the polymer under the pads at a fixed jaw gap: the creep rate goes as the stress to
-    the n, d sigma/dt = -E A sigma^n, so sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)) with tau_p = tau (p/p_top)^(1 - n):
-    the top pressure relaxes with tau, lower ones (p/p_top)^(n - 1) times slower (n -> 1: the exponential, alike at
-    every pressure). A share r of the force relaxes this way (the rest is carried elastically)."""
-    loss, tau, b_kt, b_gain, n = th
-    p = baseline(ctx)
-    ps = ctx.feats.pressures()
-    top = max(ps) if ps else 1.0
-    rel_p = np.array([(s.pressure_kPa or top) / top for s in ctx.sines], float)
-    p.force_rel[:] = -loss * (1.0 - norton_relaxed(creep_since_first_record(ctx) / tau, rel_p, n))
-    follow_force(p, ctx, b_kt, b_gain)
-    return p
-
-
-def norton_relaxed(x: np.ndarray, rel_p: np.ndarray, n: float) -> np.ndarray:
-    """sigma/sigma0 of Norton creep at a fixed strain after time x (in tau at the top pressure) for a pressure rel_p
-    of the top: (1 + (n - 1) x rel_p^(n - 1))^(-1/(n - 1))."""
-    m = max(n - 1.0, 1e-6)
-    return np.exp(-np.log1p(m * x * rel_p**m) / m)
-
-
 # ------------------------------------------------------------------------------------------ smooth memory, sensor side
 
 
@@ -463,29 +338,29 @@ FAMILIES["hysteresis"] += [
 ]
 _DRY = ("gain_level", "gain_loss", "conductance_level", "conductance_loss")
 FAMILIES["dehydration"] += [
-    _form("dehydration", "linear", _DRY, (1.0, 0.2, 1.0, 0.1), (0.5, -0.5, 0.5, -0.5), (2.0, 0.9, 2.0, 0.9), _session_time(_linear),
+    _form("dehydration", "linear", _DRY, (1.0, 0.2, 1.0, 0.1), (0.5, -0.5, 0.5, -0.5), (2.0, 0.9, 2.0, 0.9), slow.session_time(slow.linear),
           "gain and conductance falling linearly with session time from levels of their own (zero-order evaporation)"),
     _form("dehydration", "saturating", (*_DRY, "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.3), (0.5, -0.5, 0.5, -0.5, 0.03), (2.0, 0.9, 2.0, 0.9, 5.0),
-          _session_time(_saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
+          slow.session_time(slow.saturating), "gain and conductance falling as 1 - exp(-t/tau) towards an equilibrium (first-order drying)"),
     _form("dehydration", "power", (*_DRY, "exponent"), (1.0, 0.2, 1.0, 0.1, 0.5), (0.5, -0.5, 0.5, -0.5, 0.2), (2.0, 0.9, 2.0, 0.9, 3.0),
-          _session_time(_power), "gain and conductance falling as a power of session time, t^n (n = 1/2: diffusion through a drying skin)"),
+          slow.session_time(slow.power), "gain and conductance falling as a power of session time, t^n (n = 1/2: diffusion through a drying skin)"),
     _form("dehydration", "falling_rate", (*_DRY, "critical_u", "removable_ratio"), (1.0, 0.2, 1.0, 0.1, 0.4, 0.5),
-          (0.5, -0.5, 0.5, -0.5, 0.05, 0.05), (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), _session_time(_falling_rate),
+          (0.5, -0.5, 0.5, -0.5, 0.05, 0.05), (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), slow.session_time(slow.falling_rate),
           "a constant drying rate up to the critical moisture, then a falling rate towards the removable water (the drying curve)"),
     _form("dehydration", "charge", (*_DRY, "charge_share"), (1.0, 0.2, 1.0, 0.1, 0.7), (0.5, -0.5, 0.5, -0.5, 0.0), (2.0, 0.9, 2.0, 0.9, 1.0),
-          _drying(_by_charge), "gain and conductance falling with the charge passed (electro-osmotic drag), beside the clock's evaporation"),
+          slow.drying(slow.by_charge), "gain and conductance falling with the charge passed (electro-osmotic drag), beside the clock's evaporation"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
 FAMILIES["clamp_relaxation"] += [
     _form("clamp_relaxation", "log_creep", _CREEP, (0.02, 30.0, 1.0, 0.0), (-0.2, 0.5, -10.0, -10.0), (0.6, 1e4, 10.0, 10.0),
-          _creep(_log_creep), "clamp force creeping with log time, F = F0 (1 - r ln(1 + t/tau)); K_t bar and gain follow it"),
+          slow.creep(slow.log_creep), "clamp force creeping with log time, F = F0 (1 - r ln(1 + t/tau)); K_t bar and gain follow it"),
     _form("clamp_relaxation", "power_creep", (*_CREEP, "exponent"), (0.03, 600.0, 1.0, 0.0, 0.4), (-0.2, 20.0, -10.0, -10.0, 0.05),
-          (0.6, 1e4, 10.0, 10.0, 1.0), _creep(_power_creep), "clamp force creeping as a power of time (Nutting), F = F0 (1 - r (t/tau)^n)"),
+          (0.6, 1e4, 10.0, 10.0, 1.0), slow.creep(slow.power_creep), "clamp force creeping as a power of time (Nutting), F = F0 (1 - r (t/tau)^n)"),
     _form("clamp_relaxation", "two_arm", (*_CREEP, "slow_ratio", "fast_share"), (0.05, 60.0, 1.0, 0.0, 20.0, 0.5),
-          (-0.2, 5.0, -10.0, -10.0, 3.0, 0.0), (0.6, 1e4, 10.0, 10.0, 300.0, 1.0), _creep(_two_arm_creep),
+          (-0.2, 5.0, -10.0, -10.0, 3.0, 0.0), (0.6, 1e4, 10.0, 10.0, 300.0, 1.0), slow.creep(slow.two_arm_creep),
           "clamp force relaxing in two arms, F = F0 (1 - r (w (1 - e^-t/tau) + (1 - w)(1 - e^-t/(k tau)))); K_t bar and gain follow it"),
     _form("clamp_relaxation", "norton", (*_CREEP, "norton_n"), (0.3, 600.0, 1.0, 0.0, 3.0), (-0.2, 5.0, -10.0, -10.0, 1.05),
-          (1.0, 1e5, 10.0, 10.0, 8.0), _norton,
+          (1.0, 1e5, 10.0, 10.0, 8.0), slow.norton,
           "power-law (Norton) creep, sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)), tau_p = tau (p/p_top)^(1 - n): the high "
           "pressures relax most and first; K_t bar and gain follow it"),
 ]

@@ -1,0 +1,140 @@
+"""The slow effects' forms: drying over the session (dehydration) and the clamp's force creeping (clamp relaxation).
+
+Each is a shape in time, the session's clock or the charge passed for drying, the time since a pressure's first
+record for the clamp; ``families.FAMILIES`` registers them as forms of their effect.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from labrig.diagnose.catalogue import Context, baseline, creep_since_first_record, follow_force
+
+
+# ------------------------------------------------------------------------------------------ drying
+
+
+def drying(loss):
+    """Water loss over the session, ``loss(t, sh, ctx)`` in 0..1 at rig time t: the displacement's gain falls by
+    k_d x and the conductance by k_i x (one loss of water: the mobile ions' share dries with it, more slowly or
+    faster), each from a level of its own. The level is free because the baseline's alpha and electrical values
+    were fitted on data already drying: they hold the session's average, not the wet strip."""
+
+    def apply(th, ctx: Context):
+        lev_d, k_d, lev_i, k_i, *sh = th
+        p = baseline(ctx)
+        for k, s in enumerate(ctx.sines):
+            x = loss(np.array(s.t_start), sh, ctx)
+            p.Hd[k] *= lev_d * (1 - k_d * x)
+            p.Hi[k] *= lev_i * (1 - k_i * x)
+        for k, st in enumerate(ctx.steps):
+            x = loss(st.t_start + (st.t - st.t[0]), sh, ctx)  # the loss runs on during a long step record
+            p.step_d[k] = p.step_d[k] * lev_d * (1 - k_d * x)
+            p.step_i[k] = p.step_i[k] * lev_i * (1 - k_i * x)
+        return p
+
+    return apply
+
+
+def session_time(shape):
+    """A loss that follows the clock: shape(u) of u, the session's time over its span."""
+
+    def loss(t, sh, ctx: Context):
+        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+        return shape(np.clip((t - ctx.feats.t0) / span, 0.0, 1.0), sh)
+
+    return drying(loss)
+
+
+def by_charge(t, sh, ctx: Context):
+    """Electro-osmotic drying: the hydrated cations drag water to the cathode, where it leaves the polymer, so the
+    strip dries while it is driven, with the charge passed (Q = int |i| dt over the session's records, in the
+    order they ran), beside the clock's evaporation: x = (1 - a) u + a Q(t)/Q_end."""
+    (a,) = sh
+    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+    return (1 - a) * np.clip((t - ctx.feats.t0) / span, 0.0, 1.0) + a * ctx.feats.charge_share(t)
+
+
+def linear(u, sh):
+    """Zero order: evaporation at a constant vapour-pressure deficit removes water at a constant rate."""
+    return u
+
+
+def saturating(u, sh):
+    """First order towards the room's equilibrium water content, time constant tau (in session spans)."""
+    (tau,) = sh
+    return -np.expm1(-u / tau) / -np.expm1(-1.0 / tau)
+
+
+def power(u, sh):
+    """Diffusion-limited loss: water leaving through a skin that thickens as it dries goes as a power of time,
+    u^n (Fick: n = 1/2 while the strip's core is still wet; n = 1: zero order, n > 1: a loss that speeds up)."""
+    (n,) = sh
+    return u**n
+
+
+def falling_rate(u, sh):
+    """The classic drying curve: a constant-rate period (surface water leaving at a fixed rate) up to the critical
+    moisture at u_c, then a falling-rate period in which the rate is proportional to the water still removable,
+    approaching it exponentially with the rate continuous at u_c; m is the removable water left at u_c over the
+    water lost by then. Normalised to 1 at the session's end."""
+    uc, m = sh
+    f = lambda x: np.where(x < uc, x / uc, 1.0 + m * -np.expm1(-(x - uc) / (uc * m)))  # noqa: E731
+    return f(u) / f(np.array(1.0))
+
+
+# ------------------------------------------------------------------------------------------ clamp creep
+
+
+def creep(shape):
+    """The clamp's force relaxes as the polymer under it creeps, F/F0 = 1 - r c(t / tau), t from the pressure's
+    first record; K_t bar and the gain follow the force the load cell reads (as ``catalogue._clamp_relaxation``)."""
+
+    def apply(th, ctx: Context):
+        loss, tau, b_kt, b_gain, *sh = th
+        p = baseline(ctx)
+        p.force_rel[:] = -loss * shape(creep_since_first_record(ctx) / tau, sh)
+        follow_force(p, ctx, b_kt, b_gain)
+        return p
+
+    return apply
+
+
+def log_creep(x, sh):
+    """A flat spectrum of relaxation times (a glassy polymer): the force falls with log time, ln(1 + t/tau)."""
+    return np.log1p(x)
+
+
+def power_creep(x, sh):
+    """Nutting's law (t/tau)^n, 0 < n < 1: a power-law spectrum of relaxation times (scale-free creep)."""
+    (n,) = sh
+    return x**n
+
+
+def two_arm_creep(x, sh):
+    """A generalised Maxwell clamp with two arms: a fast share w relaxing with tau and the rest ``ratio`` times
+    slower (a polymer's two relaxation processes: chain slip, then the bulk's viscous flow)."""
+    ratio, w = sh
+    return w * -np.expm1(-x) + (1.0 - w) * -np.expm1(-x / ratio)
+
+
+def norton(th, ctx: Context):
+    """Power-law (Norton) creep of the polymer under the pads at a fixed jaw gap: the creep rate goes as the stress to
+    the n, d sigma/dt = -E A sigma^n, so sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)) with tau_p = tau (p/p_top)^(1 - n):
+    the top pressure relaxes with tau, lower ones (p/p_top)^(n - 1) times slower (n -> 1: the exponential, alike at
+    every pressure). A share r of the force relaxes this way (the rest is carried elastically)."""
+    loss, tau, b_kt, b_gain, n = th
+    p = baseline(ctx)
+    ps = ctx.feats.pressures()
+    top = max(ps) if ps else 1.0
+    rel_p = np.array([(s.pressure_kPa or top) / top for s in ctx.sines], float)
+    p.force_rel[:] = -loss * (1.0 - norton_relaxed(creep_since_first_record(ctx) / tau, rel_p, n))
+    follow_force(p, ctx, b_kt, b_gain)
+    return p
+
+
+def norton_relaxed(x: np.ndarray, rel_p: np.ndarray, n: float) -> np.ndarray:
+    """sigma/sigma0 of Norton creep at a fixed strain after time x (in tau at the top pressure) for a pressure rel_p
+    of the top: (1 + (n - 1) x rel_p^(n - 1))^(-1/(n - 1))."""
+    m = max(n - 1.0, 1e-6)
+    return np.exp(-np.log1p(m * x * rel_p**m) / m)
