@@ -295,6 +295,26 @@ def test_a_cause_must_reach_every_structured_block():
         ["hysteresis", "back_relaxation"]
 
 
+def test_a_block_no_candidate_moves_does_not_hide_the_signature():
+    """A structured block that no significant candidate moves (a current line left by another cause) is left out of
+    the reach rule: the memory that moves the harmonics still ranks before the linear form that leaves them; a line
+    one of them does move still counts."""
+    import numpy as np
+
+    from labrig.diagnose.engine import CLEAN_ACCURACY, Candidate, _significant
+
+    def held(harm, line):
+        return {"frf_d": (np.full(10, 0.5), None), "harm_d": (np.full(10, harm), None), "line": (np.full(10, line), None)}
+
+    base = {"frf_d": 3.0, "harm_d": 10.0, "line": 5.0}
+    linear = Candidate("back_relaxation", {}, -5000.0, 1.0, 0.14, 0.0, 0.14, held=held(10.0, 5.0))
+    memory = Candidate("hysteresis", {}, -5000.0, 1.0, 0.25, 0.0, 0.25, held=held(3.0, 5.0))
+    rank = lambda *cs: [c.name for c in _significant(list(cs), {"frf_d", "harm_d", "line"}, base_rms=base, accuracy=CLEAN_ACCURACY)]  # noqa: E731
+    assert rank(linear, memory) == ["hysteresis", "back_relaxation"]
+    mains = Candidate("mains_pickup", {}, -5000.0, 1.0, 0.45, 0.0, 0.45, held=held(10.0, 1.0))  # moves the line only
+    assert rank(linear, memory, mains)[0] == "back_relaxation"  # now no candidate moves every contested block
+
+
 def test_the_signature_reorders_only_candidates_of_the_same_order():
     """A linear form that leaves the structured harmonics but predicts the held-out half many times better than the
     form that reaches them stays first (REACH_FACTOR): the harmonics are then what it leaves, not the cause."""
