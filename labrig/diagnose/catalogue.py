@@ -203,24 +203,31 @@ def _time_delay(th, ctx):
     return p
 
 
-def _sensor_offset(th, ctx):
-    (xi,) = th
+def sensor_read(ctx: Context, **changes) -> Prediction:
+    """The baseline with the displacement read elsewhere: every specimen ``with_(**changes)`` (the spot's position,
+    a flag's lever), the sine FRF and the steps predicted again."""
     p = baseline(ctx)
-    # gain, damping and K_t bar are refitted with it (MECH_REFIT): the baseline fit bent them towards the
-    # moved zeros, so x_m is judged on the linear path's shape, with the poles free to sit where they are
-    at = {q: sp.with_(sensor_x=min(xi, 1.0) * ctx.length) for q, sp in ctx.specimens.items()}
+    at = {q: sp.with_(**changes) for q, sp in ctx.specimens.items()}
     p.Hd = frf_by_pressure(ctx.sines, at)
     for k, st in enumerate(ctx.steps):
         p.step_d[k] = predict_step(specimen_for(at, st.pressure_kPa), st)[0]
     return p
 
 
-def frf_by_pressure(sines: list[SineFeature], specimens: dict[float, Specimen]) -> np.ndarray:
-    """Displacement FRF at each sine's frequency with its pressure's specimen (one modal set per pressure)."""
+def _sensor_offset(th, ctx):
+    # gain, damping and K_t bar are refitted with it (MECH_REFIT): the baseline fit bent them towards the
+    # moved zeros, so x_m is judged on the linear path's shape, with the poles free to sit where they are
+    (xi,) = th
+    return sensor_read(ctx, sensor_x=min(xi, 1.0) * ctx.length)
+
+
+def frf_by_pressure(sines: list[SineFeature], specimens: dict[float, Specimen], tf=transfer.frf) -> np.ndarray:
+    """``tf(f, specimen)`` (the displacement FRF unless given) at each sine's frequency with its pressure's specimen
+    (one modal set per pressure)."""
     out = np.zeros(len(sines), complex)
     for q in {s.pressure_kPa for s in sines}:
         idx = [k for k, s in enumerate(sines) if s.pressure_kPa == q]
-        out[idx] = transfer.frf(np.array([sines[k].f for k in idx]), specimen_for(specimens, q))
+        out[idx] = tf(np.array([sines[k].f for k in idx]), specimen_for(specimens, q))
     return out
 
 

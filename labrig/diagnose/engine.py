@@ -330,13 +330,15 @@ class _Scorer:
         self.refit_mechanics = refit_mechanics  # first round only: later rounds keep the accepted mechanics
         self._ref: tuple[float, float] | None = None
         self.reference_fit: Refit | None = None
+        self.reference_held: dict | None = None  # its held-out blocks
 
     def reference(self) -> tuple[float, float]:
         """(chi2 on the fitted half, held-out NRMSE) of the baseline with its mechanics refitted."""
         if self._ref is None:
             r = self.reference_fit = refit(None, self.ctx_fit, self.ctx_held, blocks, [], self.valley)
             c_ref = chi2(blocks(baseline(r.ctx_fit), r.ctx_fit))[0]
-            self._ref = (c_ref, nrmse(blocks(baseline(r.ctx_held), r.ctx_held), self.where, self.accuracy))
+            self.reference_held = blocks(baseline(r.ctx_held), r.ctx_held)
+            self._ref = (c_ref, nrmse(self.reference_held, self.where, self.accuracy))
         return self._ref
 
     def score(self, name: str) -> Candidate:
@@ -517,7 +519,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     # pinned at the valley's bound, the data want the electrical values further off than their uncertainty allows:
     # that misfit is not the baseline's own error
     if ref is not None and abs(ref.valley_sd) < 0.99 * VALLEY_BOUND:
-        ref_held = blocks(baseline(ref.ctx_held), ref.ctx_held)
+        ref_held = scorer.reference_held
         if heldout_error(block_rms(ref_held), None, accuracy) < heldout_error(held_rms, None, accuracy):
             verdict_held, verdict_ctx, refitted = ref_held, ref.ctx_held, ref.params()
     verdict_rms = block_rms(verdict_held)

@@ -24,11 +24,11 @@ from __future__ import annotations
 import numpy as np
 from scipy.signal import lfilter
 
-from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, frf_by_pressure,
-                                      played_drive)
+from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, played_drive,
+                                      sensor_read)
 from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc
-from labrig.diagnose.features import LINE_HZ, predict_step, specimen_for
+from labrig.diagnose.features import LINE_HZ
 from labrig.physics import timeresp
 
 _N = 64
@@ -291,12 +291,7 @@ def _flag(th, ctx: Context):
     """The laser reads a rigid flag or reflective tab fixed at the tip, ``lever`` beyond it along the tangent:
     w(L) + e w'(L) (``Specimen.sensor_lever``); negative e reads along the tangent towards the root."""
     (e,) = th
-    p = baseline(ctx)
-    at = {q: sp.with_(sensor_lever=e * ctx.length) for q, sp in ctx.specimens.items()}
-    p.Hd = frf_by_pressure(ctx.sines, at)
-    for k, st in enumerate(ctx.steps):
-        p.step_d[k] = predict_step(specimen_for(at, st.pressure_kPa), st)[0]
-    return p
+    return sensor_read(ctx, sensor_lever=e * ctx.length)
 
 
 def _form(base: str, form: str, params, x0, lo, hi, apply, describe, **kw) -> Extension:

@@ -30,8 +30,9 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from labrig.diagnose.catalogue import Context, Extension, Prediction, baseline, frf_by_pressure
-from labrig.diagnose.features import predict_sines, predict_step, specimen_for
+from labrig.diagnose.features import predict_step, specimen_for
 from labrig.fit.seed000_problem import shifted
+from labrig.physics import transfer
 from labrig.physics.impedance import impedance
 
 NUISANCE_BLOCKS = ("frf_d", "harm_d", "frf_i", "eis")  # what the mechanics (the first two) and the valley (all) change
@@ -49,7 +50,6 @@ class Refit:
     ctx_fit: Context
     ctx_held: Context
     valley_sd: float = 0.0  # where along the electrical stage's valley, in standard errors of R
-    valley: dict = dataclasses.field(default_factory=dict)
 
     def params(self) -> dict[str, float]:
         return {"alpha_factor": math.exp(self.log_alpha), "gamma_factor": math.exp(self.log_gamma), "electrical_valley_sd": self.valley_sd,
@@ -72,10 +72,7 @@ def with_mechanics(ctx: Context, log_alpha: float, log_gamma: float, log_kt: dic
     f3 = [dataclasses.replace(s, f=3 * s.f) for s in ctx.sines]
     new = dataclasses.replace(ctx, specimens=specimens, Hd=frf_by_pressure(ctx.sines, specimens), Hd3=frf_by_pressure(f3, specimens), base=None, cache={})
     if moved:  # the electrical path too: the current and the spectra
-        new.Hi = ctx.Hi.copy()
-        for q in {s.pressure_kPa for s in ctx.sines}:
-            idx = [k for k, s in enumerate(ctx.sines) if s.pressure_kPa == q]
-            new.Hi[idx] = predict_sines(specimen_for(specimens, q), [ctx.sines[k] for k in idx])[1]
+        new.Hi = frf_by_pressure(ctx.sines, specimens, lambda f, sp: transfer.admittance_tf(2j * np.pi * f, sp))
         new.spectra = [(s, impedance(2j * np.pi * s.f, specimen_for(specimens, s.pressure_kPa))) for s, _ in ctx.spectra]
     if steps:
         both = [predict_step(specimen_for(specimens, st.pressure_kPa), st) for st in ctx.steps]
@@ -116,17 +113,19 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
     p_fit = sorted({s.pressure_kPa for s in ctx_fit.sines if s.pressure_kPa is not None})
     p_held = sorted({s.pressure_kPa for s in ctx_held.sines if s.pressure_kPa is not None} - set(p_fit))
     k = 0 if ext is None else len(ext.params)
-    vb = VALLEY_BOUND if valley else 1e-9  # without a valley the coordinate is pinned (least_squares needs lo < hi)
-    lo = np.r_[(ext.lo if ext else ()), -LOG_BOUND_GLOBAL, -LOG_BOUND_GLOBAL, -vb, [-LOG_BOUND_KT] * len(p_fit)]
-    hi = np.r_[(ext.hi if ext else ()), LOG_BOUND_GLOBAL, LOG_BOUND_GLOBAL, vb, [LOG_BOUND_KT] * len(p_fit)]
+    nv = 1 if valley else 0  # the coordinate along the valley, where there is one
+    lo = np.r_[(ext.lo if ext else ()), -LOG_BOUND_GLOBAL, -LOG_BOUND_GLOBAL, [-VALLEY_BOUND] * nv, [-LOG_BOUND_KT] * len(p_fit)]
+    hi = np.r_[(ext.hi if ext else ()), LOG_BOUND_GLOBAL, LOG_BOUND_GLOBAL, [VALLEY_BOUND] * nv, [LOG_BOUND_KT] * len(p_fit)]
 
     def res(x: np.ndarray) -> np.ndarray:
-        fit = _sine_residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 3 :])), blocks_fn, x[k + 2], valley)
-        return np.r_[fit, x[k + 2]]  # the electrical stage's own estimate, one standard error a unit
+        vs = x[k + 2 : k + 2 + nv]  # the electrical stage's own estimate, one standard error a unit: a prior residual
+        fit = _sine_residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 2 + nv :])), blocks_fn,
+                             float(vs[0]) if nv else 0.0, valley)
+        return np.r_[fit, vs]
 
     best, cost = None, np.inf
     for th0 in starts or [np.zeros(0)]:
-        x0 = np.clip(np.r_[th0, 0.0, 0.0, 0.0, [0.0] * len(p_fit)], lo, hi)
+        x0 = np.clip(np.r_[th0, 0.0, 0.0, [0.0] * nv, [0.0] * len(p_fit)], lo, hi)
         try:
             r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50)
         except (ValueError, FloatingPointError):
@@ -134,9 +133,9 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
         if np.isfinite(r.cost) and r.cost < cost:
             best, cost = r.x, r.cost
     if best is None:
-        best = np.r_[starts[0] if starts else np.zeros(0), 0.0, 0.0, 0.0, [0.0] * len(p_fit)]
-    theta, la, lg, vs = best[:k], float(best[k]), float(best[k + 1]), float(best[k + 2]) if valley else 0.0
-    lkt = dict(zip(p_fit, map(float, best[k + 3 :])))
+        best = np.r_[starts[0] if starts else np.zeros(0), 0.0, 0.0, [0.0] * nv, [0.0] * len(p_fit)]
+    theta, la, lg, vs = best[:k], float(best[k]), float(best[k + 1]), float(best[k + 2]) if nv else 0.0
+    lkt = dict(zip(p_fit, map(float, best[k + 2 + nv :])))
     if p_held:
         def res_h(x: np.ndarray) -> np.ndarray:
             return _sine_residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn, vs, valley)
@@ -146,4 +145,4 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
     same = ctx_held is ctx_fit
     cf = with_mechanics(ctx_fit, la, lg, lkt, valley_sd=vs, valley=valley)
     ch = cf if same else with_mechanics(ctx_held, la, lg, lkt, valley_sd=vs, valley=valley)
-    return Refit(theta, la, lg, lkt, cf, ch, vs, dict(valley or {}))
+    return Refit(theta, la, lg, lkt, cf, ch, vs)
