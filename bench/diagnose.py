@@ -26,8 +26,12 @@
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 81-83 (paper,
   seed-001, 28 mm strips), a new data shape (each series on a clock of its own with zero at the trigger), six
   clean sessions.
+* Fresh7 held-out set (``--set fresh7``, bench/inject_fresh7.py ``fresh7_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 91-93 (paper,
+  seed-001, 38 mm strips), a new data shape (each impedance spectrum stored from its highest frequency down), six
+  clean sessions.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -108,7 +112,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh2": "fresh2 held-out set (seen in the fourth pass)", "fresh3": "fresh3 held-out set (seen in the fifth pass)",
           "fresh4": "fresh4 held-out set (diagnosed once unseen at f5aa88a; seen since)",
           "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)",
-          "fresh6": "fresh6 held-out set (diagnosed once unseen)"}
+          "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
+          "fresh7": "fresh7 held-out set (diagnosed once unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
@@ -116,7 +121,7 @@ def validation(a, name: str = "validation") -> list:
     import inject
 
     registers = None  # the module the pool's workers must import: it registers the set's forms, bases and variants
-    if name in ("fresh2", "fresh3", "fresh4", "fresh5", "fresh6"):
+    if name in ("fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7"):
         registers = f"inject_{name}"
         todo = getattr(importlib.import_module(registers), f"{name}_cases")()
     else:

@@ -51,3 +51,22 @@ def test_electrolysis_growing_exponentially_is_faradaic(exported):
     out = diagnosed(exported, "faradaic_current", "tafel")
     assert (out["verdict"], out["cause"]) == ("effect", "faradaic_current"), out["candidates"]
     assert out["extended"]["form"] in ("polynomial", "exponential") and out["gain"]["heldout_nrmse_ratio"] < 0.5
+
+
+def test_hum_on_the_drive_monitor_alone_is_mains_pickup(exported):
+    """Pickup on the DAQ's voltage-monitor input only (a ground loop on a single-ended channel): the recorded drive
+    carries a 50 Hz line and its 3rd harmonic that the strip never saw, displacement and current are untouched. The
+    lines are read on the monitor too, so the cause is named and located there."""
+    s = inject.read_export(exported / "clean", "paper")
+    for r in s.series():
+        w = 2 * np.pi * 50.0 * r.cols["t_s"]
+        r.cols["v_V"] = r.cols["v_V"] + 1.5e-3 * np.cos(w + 0.3) + 4e-4 * np.cos(3 * w + 1.1)
+    h5 = exported / "monitor_hum.h5"
+    assert main(["import", str(inject.write_import(s, exported / "monitor_hum")), "--out", str(h5)]) == 0
+    out = run_diagnosis(h5, load_and_fit(h5, "diagnose"))
+    assert (out["verdict"], out["cause"]) == ("effect", "mains_pickup"), out["candidates"][:3]
+    assert out["gain"]["heldout_nrmse_ratio"] < 0.5
+    before = out["baseline"]["blocks"]
+    assert "line" in out["baseline"]["missed"] and before["frf_d"] < 1.5 * out["baseline"]["accuracy"]["frf_d"]
+    params = out["extended"]["params"]
+    assert params.get("volt50_mV", 0.0) > 1.0 and params.get("volt150_mV", 0.0) > 0.2, params

@@ -13,7 +13,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | time_delay | pure delay; first-order lag (a sensor's output filter) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
-| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian) |
+| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
 
 The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``.
@@ -28,7 +28,7 @@ from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _p
                                       sensor_read)
 from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc
-from labrig.diagnose.features import LINE_HZ
+from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
 from labrig.physics import timeresp
 
 _N = 64
@@ -369,33 +369,34 @@ FAMILIES["large_deflection"] += [
           "the arc read around a rest curl or a tilted beam, y = l [f(theta0 + 2 d/l) - f(theta0)]/(2 f'(theta0)), "
           "f(x) = (1 - cos x)/x: even and odd distortion tied by one geometry"),
 ]
-_MAINS_KEYS = [(ch, f) for ch in ("d", "i") for f in LINE_HZ]
+_MAINS_KEYS = [(ch, f) for ch in LINE_CHANNELS for f in LINE_HZ]
+_MAINS_SCALE = np.array([LINE_CHANNELS[ch][3] for ch, _ in _MAINS_KEYS])
 
 
 def _mains_harmonics(th, ctx: Context):
     """A constant-amplitude line at every mains frequency and harmonic read (``features.LINE_HZ``), each channel's
     own: a chopped (triac, rectifier) or saturating (transformer) current couples its harmonics in too."""
     p = baseline(ctx)
-    p.line = {key: a * 1e-6 for key, a in zip(_MAINS_KEYS, th)}
+    p.line = dict(zip(_MAINS_KEYS, np.asarray(th) * _MAINS_SCALE))
     return p
 
 
 def _mains_start(ctx: Context) -> np.ndarray:
     """Each line's amplitude as the records show it: the mean power less the noise's (1.25 x the floor, as
-    ``engine.blocks`` reads it), in um and uA."""
+    ``engine.blocks`` reads it), in its channel's unit (um, uA, mV)."""
     out = []
     for key in _MAINS_KEYS:
         pw = [line.amp[key] ** 2 - (1.25 * line.floor[key]) ** 2 for line in ctx.lines
               if key in line.amp and np.isfinite(line.floor[key]) and line.floor[key] > 0]
-        out.append(np.sqrt(max(float(np.mean(pw)), 0.0)) * 1e6 if pw else 0.0)
-    return np.array(out)
+        out.append(np.sqrt(max(float(np.mean(pw)), 0.0)) if pw else 0.0)
+    return np.array(out) / _MAINS_SCALE
 
 
 FAMILIES["mains_pickup"] += [
-    _form("mains_pickup", "harmonics", tuple(f"{'disp' if ch == 'd' else 'cur'}{f:g}_{'um' if ch == 'd' else 'uA'}" for ch, f in _MAINS_KEYS),
+    _form("mains_pickup", "harmonics", tuple(f"{LINE_CHANNELS[ch][1]}{f:g}_{LINE_CHANNELS[ch][2]}" for ch, f in _MAINS_KEYS),
           (0.0,) * len(_MAINS_KEYS), (0.0,) * len(_MAINS_KEYS), (1e4,) * len(_MAINS_KEYS), _mains_harmonics,
-          "a constant line at each mains frequency and its harmonics to the 7th (50/60 Hz grids), per channel: a chopped or "
-          "saturating load's pickup", start=_mains_start),
+          "a constant line at each mains frequency and its harmonics to the 7th (50/60 Hz grids), per channel (the sensors and "
+          "the drive's monitor): a chopped or saturating load's pickup", start=_mains_start),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",

@@ -25,6 +25,8 @@ STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of i
 MAINS_HZ = (50.0, 60.0)
 MAINS_ORDERS = 7  # the mains' harmonics read: a triac's or rectifier's chopped current is rich in them, a transformer's saturation too
 LINE_HZ = tuple(sorted({base * n for base in MAINS_HZ for n in range(1, MAINS_ORDERS + 1)}))
+# the channels a line is read on: (what it is, parameter prefix, parameter unit, SI per unit)
+LINE_CHANNELS = {"d": ("displacement", "disp", "um", 1e-6), "i": ("current", "cur", "uA", 1e-6), "v": ("drive monitor", "volt", "mV", 1e-3)}
 DRIVE_ORDERS = 20  # a drive harmonic within 2 Hz of a line hides it (it would read as pickup)
 
 
@@ -80,12 +82,12 @@ class StepFeature:
 
 @dataclass
 class LineFeature:
-    """Amplitude of the mains' components (50/60 Hz and their harmonics, ``LINE_HZ``) in a record's displacement and
-    current, with the local noise floor."""
+    """Amplitude of the mains' components (50/60 Hz and their harmonics, ``LINE_HZ``) in a record's displacement,
+    current and drive monitor, with the local noise floor."""
 
     name: str
     pressure_kPa: float | None
-    amp: dict[tuple[str, float], float]  # (channel "d"/"i", line Hz) -> amplitude (m or A)
+    amp: dict[tuple[str, float], float]  # (channel "d"/"i"/"v", line Hz) -> amplitude (m, A or V)
     floor: dict[tuple[str, float], float]  # the same for the neighbouring bins (noise)
     rms: dict[str, float]  # detrended signal rms per channel
 
@@ -244,10 +246,13 @@ def extract(sd: SessionData) -> Features:
         amp, floor = {}, {}
         f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
         freqs = [f for f in LINE_HZ if not (f_drive and any(abs(k * f_drive - f) < 2.0 for k in range(1, DRIVE_ORDERS + 1)))]
-        for ch, x in (("d", r.d), ("i", r.i)):
+        # the drive's monitor too: a line the strip never saw, picked up on the recorded voltage, is mains pickup
+        # as surely as one on the sensors (and a model driven by that record would predict it in the current)
+        chans = tuple(zip(LINE_CHANNELS, (r.d, r.i, r.v)))
+        for ch, x in chans:
             for f, (a, fl) in _lines(r.t, x, r.fs, freqs).items():
                 amp[(ch, f)], floor[(ch, f)] = a, fl
-        rms = {ch: float(np.std(x)) or 1.0 for ch, x in (("d", r.d), ("i", r.i))}
+        rms = {ch: float(np.std(x)) or 1.0 for ch, x in chans}
         feats.lines.append(LineFeature(r.name, p, amp, floor, rms))
     return feats
 

@@ -36,14 +36,15 @@ def drying(loss):
     return apply
 
 
+def session_fraction(t, ctx: Context):
+    """u: rig time t as a fraction of the session's span, 0..1."""
+    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
+    return np.clip((t - ctx.feats.t0) / span, 0.0, 1.0)
+
+
 def session_time(shape):
     """A loss that follows the clock: shape(u) of u, the session's time over its span."""
-
-    def loss(t, sh, ctx: Context):
-        span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-        return shape(np.clip((t - ctx.feats.t0) / span, 0.0, 1.0), sh)
-
-    return drying(loss)
+    return drying(lambda t, sh, ctx: shape(session_fraction(t, ctx), sh))
 
 
 def by_charge(t, sh, ctx: Context):
@@ -51,8 +52,7 @@ def by_charge(t, sh, ctx: Context):
     strip dries while it is driven, with the charge passed (Q = int |i| dt over the session's records, in the
     order they ran), beside the clock's evaporation: x = (1 - a) u + a Q(t)/Q_end."""
     (a,) = sh
-    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-    return (1 - a) * np.clip((t - ctx.feats.t0) / span, 0.0, 1.0) + a * ctx.feats.charge_share(t)
+    return (1 - a) * session_fraction(t, ctx) + a * ctx.feats.charge_share(t)
 
 
 def linear(u, sh):

@@ -17,6 +17,8 @@ from typing import Any
 
 import numpy as np
 
+from labrig.diagnose.features import LINE_CHANNELS
+
 # A block's level above this many times its attainable accuracy is structure, not noise. Set on the tuning set's
 # clean sessions (largest level / accuracy over ten clean paper sweeps: 0.93, docs/diagnosis.md); a level of 1.5 in
 # a block of n >= 30 points is also far beyond the chi-square spread of noise alone (sqrt(1 + 3 sqrt(2/n)) ~ 1.3).
@@ -49,7 +51,7 @@ def abscissa(name: str, ctx, size: int) -> tuple[np.ndarray, str, bool, np.ndarr
         lab = np.concatenate([np.full(sp.f.size, _pressure_label(sp.pressure_kPa), dtype=object) for sp, _ in ctx.spectra])
         return np.tile(f, 2), "spectrum frequency (Hz)", True, np.tile(lab, 2)
     if name == "line":
-        series = np.array([f"{'displacement' if ch == 'd' else 'current'} {hz:g} Hz" for line in ctx.lines
+        series = np.array([f"{LINE_CHANNELS[ch][0]} {hz:g} Hz" for line in ctx.lines
                            for (ch, hz), fl in line.floor.items() if np.isfinite(fl) and fl > 0], dtype=object)
         if series.size == size:  # the engine skips components without a finite noise floor
             return np.arange(size, dtype=float), "line component (record by record)", False, series
