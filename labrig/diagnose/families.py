@@ -10,7 +10,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side); Bouc-Wen loop in the displacement path |
-| time_delay | pure delay; first-order lag (a sensor's output filter) |
+| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge |
@@ -287,6 +287,20 @@ def _lag(th, ctx: Context):
     return p
 
 
+def _skew(th, ctx: Context):
+    """Each channel read with its own delay after the recorded drive: tau_d on the displacement, tau_i on the
+    current (an ADC's or a filter's latency on one channel, a multiplexer's skew). Equal and negative, the drive's
+    monitor is the late one (an isolation amplifier or a filter on the voltage record): both responses lead it."""
+    tau_d, tau_i = th
+    p = baseline(ctx)
+    w = 2j * np.pi * np.array([s.f for s in ctx.sines])
+    p.Hd, p.Hi = p.Hd * np.exp(-w * tau_d), p.Hi * np.exp(-w * tau_i)
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k] = np.interp(st.t - tau_d, st.t, p.step_d[k], left=0.0)
+        p.step_i[k] = np.interp(st.t - tau_i, st.t, p.step_i[k], left=0.0)
+    return p
+
+
 def _flag(th, ctx: Context):
     """The laser reads a rigid flag or reflective tab fixed at the tip, ``lever`` beyond it along the tangent:
     w(L) + e w'(L) (``Specimen.sensor_lever``); negative e reads along the tangent towards the root."""
@@ -401,6 +415,9 @@ FAMILIES["mains_pickup"] += [
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",
           refit_mechanics=True),
+    _form("time_delay", "skew", ("tau_disp_s", "tau_cur_s"), (0.005, 0.0), (-0.2, -0.2), (0.2, 0.2), _skew,
+          "each channel's own delay after the recorded drive, exp(-s tau_d) and exp(-s tau_i) (equal and negative: the "
+          "drive's monitor late)", refit_mechanics=True),
 ]
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
