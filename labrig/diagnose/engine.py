@@ -59,6 +59,10 @@ RATIO_FURTHER = 0.8
 # form happens to fit it (third pass: a form with a free current gain fitted 0 there). Not a threshold: a signature.
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
+# Families whose forms change these blocks only: where the base misses none of them, no form can lower the held-out
+# error (it is measured on the missed blocks), so only the catalogue's form is fitted, for the record (the mains'
+# harmonics form has 42 amplitudes: ~5 s of a session's fits for nothing)
+ONLY_BLOCKS = {"mains_pickup": frozenset({"line"})}
 # a block lowered by no more than this share of its level is out of a form's reach (a linear form leaves the harmonics
 # exactly where they were: 0; the forms that can move them lower them by 2 % and more on the fresh3 set's friction cases)
 REACH_TOL = 0.01
@@ -349,9 +353,11 @@ class _Scorer:
         against the exponential's 0.03, and a sensor offset took the name). The ratio reported is therefore
         the best of the family's forms (at most four): optimistic by that choice, said in docs/diagnosis.md."""
         family = FAMILIES[name]
-        if not self.where or (name in CURRENT_CAUSES and not set(self.where) & CURRENT_BLOCKS):
+        only = ONLY_BLOCKS.get(name)
+        if (not self.where or (name in CURRENT_CAUSES and not set(self.where) & CURRENT_BLOCKS)
+                or (only is not None and not set(self.where) & only)):
             # it cannot be named (nothing missed: no form gets below 1; a current cause needs the current missed,
-            # _significant): the catalogue's form alone, for the record
+            # _significant; a family of ONLY_BLOCKS none of which is missed): the catalogue's form alone, for the record
             family = family[:1]
         forms = [self.score_form(name, ext) for ext in family]
         return min(forms, key=lambda c: (c.delta_bic >= DBIC_EFFECT, max(c.heldout_ratio, c.ratio_vs_reference) if c.delta_bic < DBIC_EFFECT else c.delta_bic))
