@@ -78,13 +78,20 @@ def test_trigger_clock():
             assert b.cols["v_V"][k] >= 0.5 > b.cols["v_V"][k - 1]
 
 
-def test_case_list():
-    cases = f6.fresh6_cases()
+def check_case_list(cases_of, forms: dict, seeds: set, variant: str) -> list:
+    """A set of 34 cases with distinct names: every form once (outside structures twice), six clean, on its seeds,
+    bases and variants registered, its new variant used, ``cases_of("none")`` the clean ones. Returns the cases."""
+    cases = cases_of()
     assert len(cases) == len({c.name for c in cases}) == 34
-    assert {c.seed for c in cases} == {81, 82, 83} and {c.base for c in cases} <= set(inject.BASES)
-    assert {c.variant for c in cases} <= set(inject.VARIANTS) and "trigger_clock" in {c.variant for c in cases}
-    for truth, forms in f6.FRESH6_FORMS.items():
+    assert {c.seed for c in cases} == seeds and {c.base for c in cases} <= set(inject.BASES)
+    assert {c.variant for c in cases} <= set(inject.VARIANTS) and variant in {c.variant for c in cases}
+    for truth, named in forms.items():
         got = sorted(c.form for c in cases if c.truth == truth)
-        assert got == sorted(list(forms) * (2 if truth == "unexplained" else 1)), truth
+        assert got == sorted(list(named) * (2 if truth == "unexplained" else 1)), truth
     assert len([c for c in cases if c.truth == "none"]) == 6
-    assert [c.name for c in f6.fresh6_cases("none")] == [c.name for c in cases if c.truth == "none"]
+    assert [c.name for c in cases_of("none")] == [c.name for c in cases if c.truth == "none"]
+    return cases
+
+
+def test_case_list():
+    check_case_list(f6.fresh6_cases, f6.FRESH6_FORMS, {81, 82, 83}, "trigger_clock")

@@ -22,6 +22,7 @@ import inject_fresh6  # noqa: E402
 import inject_fresh7 as f7  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE  # noqa: E402
+from test_inject_fresh6 import check_case_list  # noqa: E402
 
 DISP, CUR, FORCE, Z, V = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
 CHANGES = {  # the columns each form must change (every other column, t_s included, stays bit for bit)
@@ -98,13 +99,5 @@ def test_eis_descending_imports(tmp_path):
 
 
 def test_case_list():
-    cases = f7.fresh7_cases()
-    assert len(cases) == len({c.name for c in cases}) == 34
-    assert {c.seed for c in cases} == {91, 92, 93} and {c.base for c in cases} == {"paper_91", "s001_92", "p38_93"}
-    assert {c.base for c in cases} <= set(inject.BASES) and inject.BASES["p38_93"][1] == "paper_38"
-    assert {c.variant for c in cases} <= set(inject.VARIANTS) and "eis_descending" in {c.variant for c in cases}
-    for truth, forms in f7.FRESH7_FORMS.items():
-        got = sorted(c.form for c in cases if c.truth == truth)
-        assert got == sorted(list(forms) * (2 if truth == "unexplained" else 1)), truth
-    assert len([c for c in cases if c.truth == "none"]) == 6
-    assert [c.name for c in f7.fresh7_cases("none")] == [c.name for c in cases if c.truth == "none"]
+    cases = check_case_list(f7.fresh7_cases, f7.FRESH7_FORMS, {91, 92, 93}, "eis_descending")
+    assert {c.base for c in cases} == {"paper_91", "s001_92", "p38_93"} and inject.BASES["p38_93"][1] == "paper_38"

@@ -193,14 +193,22 @@ def played_drive(w: float, radii, gain: float, ctx: Context) -> "Prediction":
     return p
 
 
+def delayed(ctx: Context, tau_d: float, tau_i: float = 0.0) -> Prediction:
+    """The baseline with the displacement read tau_d and the current tau_i after the recorded drive: exp(-s tau) on
+    the FRF, each step's response shifted (a channel at 0 left as it is)."""
+    p = baseline(ctx)
+    w = 2j * np.pi * np.array([s.f for s in ctx.sines])
+    for attr, steps, tau in (("Hd", p.step_d, tau_d), ("Hi", p.step_i, tau_i)):
+        if tau:
+            setattr(p, attr, getattr(p, attr) * np.exp(-w * tau))
+            for k, st in enumerate(ctx.steps):
+                steps[k] = np.interp(st.t - tau, st.t, steps[k], left=0.0)
+    return p
+
+
 def _time_delay(th, ctx):
     (tau,) = th
-    p = baseline(ctx)
-    f = np.array([s.f for s in ctx.sines])
-    p.Hd = p.Hd * np.exp(-2j * np.pi * f * tau)
-    for k, st in enumerate(ctx.steps):
-        p.step_d[k] = np.interp(st.t - tau, st.t, p.step_d[k], left=0.0)
-    return p
+    return delayed(ctx, tau)
 
 
 def sensor_read(ctx: Context, **changes) -> Prediction:

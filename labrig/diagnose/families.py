@@ -24,8 +24,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.signal import lfilter
 
-from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, played_drive,
-                                      sensor_read)
+from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
+                                      played_drive, sensor_read)
 from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
@@ -292,13 +292,7 @@ def _skew(th, ctx: Context):
     current (an ADC's or a filter's latency on one channel, a multiplexer's skew). Equal and negative, the drive's
     monitor is the late one (an isolation amplifier or a filter on the voltage record): both responses lead it."""
     tau_d, tau_i = th
-    p = baseline(ctx)
-    w = 2j * np.pi * np.array([s.f for s in ctx.sines])
-    p.Hd, p.Hi = p.Hd * np.exp(-w * tau_d), p.Hi * np.exp(-w * tau_i)
-    for k, st in enumerate(ctx.steps):
-        p.step_d[k] = np.interp(st.t - tau_d, st.t, p.step_d[k], left=0.0)
-        p.step_i[k] = np.interp(st.t - tau_i, st.t, p.step_i[k], left=0.0)
-    return p
+    return delayed(ctx, tau_d, tau_i)
 
 
 def _flag(th, ctx: Context):

@@ -130,12 +130,16 @@ class Features:
     # moment of the session (drying by electro-osmotic drag follows it, not the clock)
     passed: list[tuple[float, float, float]] = field(default_factory=list)
 
+    def time_share(self, t: np.ndarray | float) -> np.ndarray:
+        """Rig time t as a share of the session's span, 0..1."""
+        return np.clip((np.asarray(t, float) - self.t0) / max(self.t1 - self.t0, 1.0), 0.0, 1.0)
+
     def charge_share(self, t: np.ndarray | float) -> np.ndarray:
         """The share of the session's charge passed before rig time t (linear within a record), 0..1."""
         t = np.asarray(t, float)
         total = sum(q for _, _, q in self.passed)
         if total <= 0:
-            return np.clip((t - self.t0) / max(self.t1 - self.t0, 1.0), 0.0, 1.0)
+            return self.time_share(t)
         knots, share = self._charge_knots
         return np.interp(t, knots, share)
 

@@ -36,15 +36,9 @@ def drying(loss):
     return apply
 
 
-def session_fraction(t, ctx: Context):
-    """u: rig time t as a fraction of the session's span, 0..1."""
-    span = max(ctx.feats.t1 - ctx.feats.t0, 1.0)
-    return np.clip((t - ctx.feats.t0) / span, 0.0, 1.0)
-
-
 def session_time(shape):
     """A loss that follows the clock: shape(u) of u, the session's time over its span."""
-    return drying(lambda t, sh, ctx: shape(session_fraction(t, ctx), sh))
+    return drying(lambda t, sh, ctx: shape(ctx.feats.time_share(t), sh))
 
 
 def by_charge(t, sh, ctx: Context):
@@ -52,7 +46,7 @@ def by_charge(t, sh, ctx: Context):
     strip dries while it is driven, with the charge passed (Q = int |i| dt over the session's records, in the
     order they ran), beside the clock's evaporation: x = (1 - a) u + a Q(t)/Q_end."""
     (a,) = sh
-    return (1 - a) * session_fraction(t, ctx) + a * ctx.feats.charge_share(t)
+    return (1 - a) * ctx.feats.time_share(t) + a * ctx.feats.charge_share(t)
 
 
 def linear(u, sh):
