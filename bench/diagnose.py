@@ -30,8 +30,12 @@
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 91-93 (paper,
   seed-001, 38 mm strips), a new data shape (each impedance spectrum stored from its highest frequency down), six
   clean sessions.
+* Fresh8 held-out set (``--set fresh8``, bench/inject_fresh8.py ``fresh8_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 94-96 (paper,
+  seed-001, 32 mm strips), a new data shape (a software-timed loop: each sample stamped when the host took it, the
+  stamps uneven), six clean sessions.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -113,7 +117,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh4": "fresh4 held-out set (diagnosed once unseen at f5aa88a; seen since)",
           "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)",
           "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
-          "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)"}
+          "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
+          "fresh8": "fresh8 held-out set (unseen until diagnosed)"}
 
 
 def validation(a, name: str = "validation") -> list:
@@ -121,7 +126,7 @@ def validation(a, name: str = "validation") -> list:
     import inject
 
     registers = None  # the module the pool's workers must import: it registers the set's forms, bases and variants
-    if name in ("fresh2", "fresh3", "fresh4", "fresh5", "fresh6", "fresh7"):
+    if name.startswith("fresh") and name != "fresh":
         registers = f"inject_{name}"
         todo = getattr(importlib.import_module(registers), f"{name}_cases")()
     else:
