@@ -39,9 +39,9 @@ class CaseResult:
         return self.answer == self.scenario
 
 
-def make_session(args: tuple[str, int, str, str]) -> Path:
+def make_session(args: tuple) -> Path:
     """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder`` (a finished run kept there is reused)."""
-    name, seed, folder, protocol = args
+    name, seed, folder, protocol = args[:4]
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
 
@@ -58,8 +58,9 @@ def make_session(args: tuple[str, int, str, str]) -> Path:
     raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
 
 
-def run_case(args: tuple[str, int, str, str]) -> CaseResult:
-    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it."""
+def run_case(args: tuple) -> CaseResult:
+    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it; with a fifth
+    element False, fit only (the diagnosis' fields left empty: ``verdict`` "")."""
     name, seed = args[0], args[1]
     from labrig.analysis import load_and_fit, run_diagnosis
     from labrig.jsonable import jsonable
@@ -67,33 +68,48 @@ def run_case(args: tuple[str, int, str, str]) -> CaseResult:
     path = make_session(args)
     t0 = time.perf_counter()
     fitted = load_and_fit(path, "diagnose")
+    fit = jsonable(fitted[1].to_json())
+    if len(args) > 4 and not args[4]:
+        return CaseResult(name, seed, "", None, [], float("nan"), float("nan"), time.perf_counter() - t0, {}, str(path), fit)
     out = run_diagnosis(path, fitted)
     return CaseResult(name, seed, out["verdict"], out["cause"], list(out["effects"]), float(out["gain"]["heldout_nrmse_ratio"]),
-                      float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path), jsonable(fitted[1].to_json()))
+                      float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path), fit)
 
 
-def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2, make_only: bool = False) -> list:
+def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2, make_only: bool = False,
+              fit_only: frozenset = frozenset()) -> list:
     """Every (scenario, seed) case, ``jobs`` at a time in fresh processes (spawned: no Qt or threads inherited):
-    run, fitted and diagnosed (``CaseResult``), or with ``make_only`` only run (the session paths)."""
+    run, fitted and diagnosed (``CaseResult``; the cases in ``fit_only`` fitted only), or with ``make_only`` only run
+    (the session paths)."""
     ctx = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(jobs, mp_context=ctx) as pool:
-        return list(pool.map(make_session if make_only else run_case, [(n, s, str(folder), protocol) for n, s in cases]))
+        return list(pool.map(make_session if make_only else run_case,
+                             [(n, s, str(folder), protocol, (n, s) not in fit_only) for n, s in cases]))
 
 
 class CaseCache:
     """Cases run once and shared (the test suite's paper sweeps). ``get`` runs what is missing together with every
-    case announced in ``expected``, in one pool, so the workers stay busy instead of one sweep at a time."""
+    case announced in ``expected`` (case -> diagnosed, or fitted only), in one pool, so the workers stay busy
+    instead of one sweep at a time. A case asked for diagnosed after it was fitted only is diagnosed then (its
+    session file is reused)."""
 
-    def __init__(self, folder: str | Path, expected: list[tuple[str, int]] = (), protocol: str = "paper-sweep", jobs: int = 2):
+    def __init__(self, folder: str | Path, expected: dict[tuple[str, int], bool] | None = None, protocol: str = "paper-sweep", jobs: int = 2):
         self.folder, self.protocol, self.jobs = Path(folder), protocol, jobs
-        self._expected = list(expected)
+        self._expected = dict(expected or {})
         self._done: dict[tuple[str, int], CaseResult] = {}
 
-    def get(self, cases: list[tuple[str, int]]) -> list[CaseResult]:
+    def _lacks(self, case: tuple[str, int], diagnosed: bool) -> bool:
+        return case not in self._done or (diagnosed and not self._done[case].verdict)
+
+    def get(self, cases: list[tuple[str, int]], diagnosed: bool = True) -> list[CaseResult]:
         cases = list(cases)
-        if any(c not in self._done for c in cases):
-            missing = [c for c in dict.fromkeys([*cases, *self._expected]) if c not in self._done]
-            for r in run_cases(missing, self.folder, self.protocol, self.jobs):
+        if any(self._lacks(c, diagnosed) for c in cases):
+            want = dict(self._expected)
+            for c in cases:
+                want[c] = want.get(c, False) or diagnosed
+            missing = [c for c, d in want.items() if self._lacks(c, d)]
+            fit_only = frozenset(c for c in missing if not want[c])
+            for r in run_cases(missing, self.folder, self.protocol, self.jobs, fit_only=fit_only):
                 self._done[(r.scenario, r.seed)] = r
         return [self._done[c] for c in cases]
 

@@ -12,17 +12,19 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")  # the live window tests need no display
 
 _status = {"code": 0}
-_bench_cases: list[tuple[str, int]] = []
-BENCH_TIMEOUT_S = 3600  # the test that first asks for the shared sweeps waits for all of them (15 sweeps: ~2 min on an idle 2-core machine, 26 min at load 10)
+_bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed (else fitted only)
+BENCH_TIMEOUT_S = 3600  # the test that first asks for the shared sweeps waits for all of them (~1 min on an idle 2-core machine, far longer at load 10)
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    """Collect every selected module's ``BENCH_CASES`` (the simulated paper sweeps it reads), so the shared sweeps
-    run in one pool; the tests that read them get the long time limit."""
+    """Collect every selected module's ``BENCH_CASES`` (the simulated paper sweeps it reads, fitted and diagnosed)
+    and ``BENCH_FITS`` (fitted only), so the shared sweeps run in one pool; the tests that read them get the long
+    time limit."""
     for module in dict.fromkeys(getattr(item, "module", None) for item in items):
         for case in getattr(module, "BENCH_CASES", ()):
-            if case not in _bench_cases:
-                _bench_cases.append(case)
+            _bench_cases[case] = True
+        for case in getattr(module, "BENCH_FITS", ()):
+            _bench_cases.setdefault(case, False)
     for item in items:
         if "bench_sessions" in getattr(item, "fixturenames", ()):
             item.add_marker(pytest.mark.timeout(BENCH_TIMEOUT_S))
@@ -31,8 +33,8 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 @pytest.fixture(scope="session")
 def bench_sessions(tmp_path_factory: pytest.TempPathFactory):
     """Paper sweeps on the simulated bench (scenario, seed), each run, fitted and diagnosed once for the whole test
-    session, exactly as ``labrig run paper-sweep --sim --scenario NAME --seed N --fit --diagnose`` does
-    (bench/coverage.py: CaseCache)."""
+    session, exactly as ``labrig run paper-sweep --sim --scenario NAME --seed N --fit --diagnose`` does (or only
+    fitted, as ``--fit``, for the modules' ``BENCH_FITS``; bench/coverage.py: CaseCache)."""
     from bench.coverage import CaseCache
 
     # three workers on two cores: a run spends part of its time waiting on the simulated bench's scaled clock, and a

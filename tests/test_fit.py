@@ -17,12 +17,12 @@ from labrig.store import SessionFile
 DATA = Path(__file__).parent / "data"
 
 
-BENCH_CASES = [("none", 1)]  # the clean paper sweep, shared with the other files that read it (conftest)
+BENCH_FITS = [("none", 1)]  # the clean paper sweep, shared with the other files that read it (conftest)
 
 
 @pytest.fixture(scope="module")
 def sweep(bench_sessions):
-    path = bench_sessions.get(BENCH_CASES)[0].path
+    path = bench_sessions.get(BENCH_FITS, diagnosed=False)[0].path
     return path, run_fit(path)
 
 

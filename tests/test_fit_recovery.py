@@ -31,10 +31,10 @@ from mock_devices.impedance_sim import VirtualClock
 from mock_devices.world import World
 
 # The clean paper sweeps of seeds 1-4, shared with the diagnosis coverage (conftest's bench_sessions: run once,
-# fitted by `labrig fit`'s code). Seed 1 is the Tables test's sweep. A cheaper protocol is not the same test: with
+# fitted by `labrig fit`'s code; the seeds no diagnosis test reads are not diagnosed). Seed 1 is the Tables test's sweep. A cheaper protocol is not the same test: with
 # 5 s rests the stepped sines carry the CPE's slow tail of the preceding step and alpha and R_p move by 1-3 sigma.
 SEEDS = (1, 2, 3, 4)
-BENCH_CASES = [("none", s) for s in SEEDS]
+BENCH_FITS = [("none", s) for s in SEEDS]
 CLAMP_FITTED = ("R_c", "Q0c", "n_c")
 LINE_FITTED = ("R", "R_p", "Q0", "n")
 
@@ -94,7 +94,7 @@ def run_and_fit(folder: Path, seed: int) -> tuple[SessionData, dict]:
 @pytest.fixture(scope="module")
 def fits(bench_sessions) -> dict[int, tuple[str, dict]]:
     """seed -> (session file, its seed-000 fit as `labrig fit --json` prints it)."""
-    return {r.seed: (r.path, r.fit) for r in bench_sessions.get(BENCH_CASES)}
+    return {r.seed: (r.path, r.fit) for r in bench_sessions.get(BENCH_FITS, diagnosed=False)}
 
 
 def test_recovery_coverage_over_seeds(fits):
