@@ -1,5 +1,5 @@
-"""Recording artefacts (labrig/diagnose/artefacts.py): readings that leave their signal for a few samples and narrow
-lines that neither the drive nor the mains explains, read off the sine records of the suite's clean paper sweep with
+"""Recording artefacts (labrig/diagnose/artefacts.py): readings that leave their signal for a few samples, narrow
+lines that neither the drive nor the mains explains and a wander that does not repeat, read off the sine records of the suite's clean paper sweep with
 such things written into it. The forms here are the test's own (none is one of the held-out sets' structures)."""
 
 import copy
@@ -37,6 +37,7 @@ def test_the_clean_sweep_carries_no_recording_artefact(clean):
     a = art.artefacts(clean)
     assert a["records_read"] >= 20 and not a["flagged"], a
     assert a["max"]["burst_z"] < art.BURST_Z and a["max"]["line_power"] < art.LINE_POWER
+    assert 0.5 < a["max"]["wander"] < art.WANDER_POWER / 3  # white: the low band's power is the white band's
 
 
 @pytest.mark.parametrize("fault", ["sentinel", "frozen"])
@@ -72,6 +73,30 @@ def test_a_foreign_line_is_found_and_the_mains_with_sidebands_is_not(clean):
     assert a["lines"]["flagged"] and not a["bursts"]["flagged"]
     assert any(abs(f - 37.3) < 0.1 for f in a["lines"]["frequencies_Hz"]["displacement"]), a["lines"]
     assert not art.artefacts(mains)["flagged"]
+
+
+def test_a_wander_that_does_not_repeat_is_found_and_a_slow_drift_is_not(clean):
+    """A water bath's surface rocking under the beam: band-limited noise (0.2-1.5 Hz, a few times the laser's noise
+    in RMS) on the displacement of every sine record is a wander, in the displacement only; the strip's slow creep
+    within a record (an exponential with the record's length as its time, 20 um) is the trend's, not a wander."""
+    from scipy import signal
+
+    rock, creep = copy.deepcopy(clean), copy.deepcopy(clean)
+    rng = np.random.default_rng(5)
+    for r in sines(rock):
+        fs = 1.0 / float(np.median(np.diff(r.t)))
+        sos = signal.butter(2, [0.2, 1.5], "bandpass", fs=fs, output="sos")
+        x = signal.sosfiltfilt(sos, rng.standard_normal(r.t.size + 2000))[1000:-1000]
+        r.d = r.d + 2e-6 * x / np.std(x)
+    for r in sines(creep):
+        span = float(np.ptp(r.t))
+        r.d = r.d + 20e-6 * np.exp(-(r.t - r.t[0]) / max(span, 1e-3))
+    a = art.artefacts(rock)
+    assert a["wander"]["flagged"] and a["wander"]["channels"] == ["displacement"], a["wander"]
+    assert a["max"]["wander"] > art.WANDER_POWER and not a["bursts"]["flagged"] and not a["lines"]["flagged"]
+    assert "wanders" in art.detail(a)
+    b = art.artefacts(creep)
+    assert not b["flagged"] and b["max"]["wander"] < art.WANDER_POWER / 3, b["max"]
 
 
 def test_a_vibration_line_in_an_import_is_unexplained_and_located(bench_sessions, tmp_path):

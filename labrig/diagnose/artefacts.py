@@ -15,10 +15,18 @@ demodulated features almost untouched:
   clock. A bin of the residual's Hann periodogram above ``LINE_POWER`` times its neighbours' mean power (their
   median / ln 2), in ``MIN_RECORDS`` records or more.
 
-Neither threshold was set on a set of sessions: both are tails of the noise's own law. Gaussian noise exceeds 6
+* **wander**: the residual is not white: its mean power in ``WANDER_BAND_HZ`` (0.1-3 Hz, clear of the drive's
+  harmonics and the mains) over its mean power in the white band (an eighth to a quarter of the record's rate) above
+  ``WANDER_POWER``, in ``MIN_RECORDS`` records or more. A laser's and a current amplifier's noise is white over the
+  band a record spans; a wander that does not repeat from cycle to cycle (air currents steering the beam, a bath's
+  surface moving, a sensor's own 1/f) raises the cycle-to-cycle scatter the diagnosis takes for the session's noise,
+  and so hides inside it: none of the feature blocks can show it.
+
+No threshold was set on a set of sessions: all are tails of the noise's own law. Gaussian noise exceeds 6
 sigma with probability 2e-9 per sample; a periodogram bin of noise exceeds 25 times its mean with probability
 e^-25 = 1.4e-11 (chi-square with two degrees of freedom), so a session of 10^7 samples and 10^6 bins has about
-1e-5 expected false alarms before the two-record rule. What they read on the clean sessions of every set is in
+1e-5 expected false alarms before the two-record rule; the ratio of two means of 16 or more such bins exceeds 10 with
+probability below 1e-6. What they read on the clean sessions of every set is in
 docs/diagnosis.md ("Recording artefacts"). Only the sine records are read: their periodic part is known.
 """
 
@@ -49,6 +57,10 @@ LOBE = 2  # bins either side of a line that its Hann window spreads it over
 MERGE_REL = 0.01  # lines of several records this close (relative) are one line
 LOW_BINS = 8  # the lowest bins carry the trend's leakage
 SLOW_WINDOW_S = 1.0  # the running median's window: an excursion up to half this long stands out of it
+WANDER_POWER = 10.0  # the residual's mean power in WANDER_BAND_HZ over its mean power in the white band
+WANDER_BAND_HZ = (0.1, 3.0)  # where a non-repeatable wander sits (air currents, a bath's motion, a sensor's 1/f)
+WHITE_BAND = (1 / 8, 1 / 4)  # of the record's rate: the noise floor, clear of the trend and of an anti-alias filter
+MIN_BINS = 16  # periodogram bins each band needs for its mean power to be read
 
 
 def _alias(f: np.ndarray, fs: float) -> np.ndarray:
@@ -189,6 +201,37 @@ def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[floa
     return [(float(f[k]), float(ratio[k])) for k in np.flatnonzero(hit)], float(ratio[ok].max(initial=0.0))
 
 
+def _guarded(f: np.ndarray, fs: float, f0: float, orders: int) -> np.ndarray:
+    """Bins clear of the drive's first ``orders`` harmonics (and their aliases) and of the mains' lines."""
+    df = f[1] - f[0]
+    ok = np.ones(f.size, bool)
+    ok[:LOW_BINS] = False
+    for g in _alias(f0 * np.arange(1, orders + 1), fs):
+        ok[np.abs(f - g) <= GUARD_BINS * df] = False
+    for base in MAINS_HZ:
+        for g in _alias(base * np.arange(1, int(fs / base) + 2), fs):
+            ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
+    return ok
+
+
+def _wander(e: np.ndarray, fs: float, f0: float) -> float:
+    """The residual's mean periodogram power in ``WANDER_BAND_HZ`` over its mean power in ``WHITE_BAND`` (both clear
+    of the drive's harmonics and the mains): 1 for white noise; nan where either band has fewer than ``MIN_BINS``
+    bins (a short record: its low band is the trend's). For white noise each mean is a mean of M exponential powers:
+    their ratio exceeds 10 with M >= 16 (Hann: about M/2 independent) with probability below 1e-6."""
+    n = e.size
+    p = np.abs(np.fft.rfft((e - e.mean()) * np.hanning(n))) ** 2
+    f = np.fft.rfftfreq(n, 1.0 / fs)
+    if f.size < 3:
+        return float("nan")
+    ok = _guarded(f, fs, f0, HARMONICS)
+    low = ok & (f >= WANDER_BAND_HZ[0]) & (f <= WANDER_BAND_HZ[1]) & (f < WHITE_BAND[0] * fs)
+    white = _guarded(f, fs, f0, ALIAS_ORDERS) & (f >= WHITE_BAND[0] * fs) & (f <= WHITE_BAND[1] * fs)
+    if low.sum() < MIN_BINS or white.sum() < MIN_BINS:
+        return float("nan")
+    return float(np.mean(p[low]) / max(np.mean(p[white]), 1e-300))
+
+
 def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
     """Bursts and foreign lines of one sine record, per channel; None if the record cannot be read."""
     seg = _segment(r)
@@ -206,7 +249,7 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
         e_burst = e_burst - _running_median(e_burst, fs, f0, bool(np.any(per)))
         runs, longest, zmax = _bursts(e_burst, _quantum(y))
         lines, top = _foreign_lines(e, fs, f0)
-        out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top}
+        out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top, "wander": _wander(e, fs, f0)}
     return out
 
 
@@ -215,6 +258,7 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     per = [a for a in (record_artefacts(r) for r in sd.all_records()) if a is not None]
     burst_recs = [a for a in per if any(a[ch]["bursts"] for ch in ("displacement", "current"))]
     line_recs = [a for a in per if any(a[ch]["lines"] for ch in ("displacement", "current"))]
+    wander_recs = [a for a in per if any(a[ch]["wander"] > WANDER_POWER for ch in ("displacement", "current"))]
     lines: dict[str, list[float]] = {}
     for a in line_recs:
         for ch in ("displacement", "current"):
@@ -227,18 +271,23 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                    "flagged": len(burst_recs) >= MIN_RECORDS},
         "lines": {"records": len(line_recs), "frequencies_Hz": {ch: [float(f"{f:.4g}") for f in _merge(v)][:20] for ch, v in lines.items()},
                   "flagged": len(line_recs) >= MIN_RECORDS},
-        "burst_z": BURST_Z, "burst_run": BURST_RUN, "line_power": LINE_POWER, "min_records": MIN_RECORDS,
+        "wander": {"records": len(wander_recs),
+                   "channels": sorted({ch for a in wander_recs for ch in ("displacement", "current") if a[ch]["wander"] > WANDER_POWER}),
+                   "frequencies_Hz": sorted({a["frequency_Hz"] for a in wander_recs}), "flagged": len(wander_recs) >= MIN_RECORDS},
+        "burst_z": BURST_Z, "burst_run": BURST_RUN, "line_power": LINE_POWER, "wander_power": WANDER_POWER, "min_records": MIN_RECORDS,
     }
-    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"])
+    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"])
+    wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
-                  "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0)}
+                  "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
+                  "wander": max(wander, default=0.0)}
     return out
 
 
 def level(a: dict[str, Any]) -> float:
-    """The worst artefact over its threshold: the sustained burst level / ``BURST_Z`` or the line power / ``LINE_POWER``,
-    whichever is larger (> 1 for a flagged kind)."""
-    return float(max(a["max"]["burst_z"] / BURST_Z, a["max"]["line_power"] / LINE_POWER))
+    """The worst artefact over its threshold: the sustained burst level / ``BURST_Z``, the line power / ``LINE_POWER``
+    or the wander / ``WANDER_POWER``, whichever is largest (> 1 for a flagged kind)."""
+    return float(max(a["max"]["burst_z"] / BURST_Z, a["max"]["line_power"] / LINE_POWER, a["max"].get("wander", 0.0) / WANDER_POWER))
 
 
 def detail(a: dict[str, Any]) -> str:
@@ -251,4 +300,9 @@ def detail(a: dict[str, Any]) -> str:
     if a["lines"]["flagged"]:
         fr = "; ".join(f"{ch} {', '.join(f'{x:g}' for x in v[:6])} Hz" for ch, v in a["lines"]["frequencies_Hz"].items())
         parts.append(f"narrow lines neither the drive's harmonics nor the mains' in {a['lines']['records']} sine records ({fr})")
+    if a["wander"]["flagged"]:
+        w = a["wander"]
+        parts.append(f"the {' and '.join(w['channels'])} wanders at {WANDER_BAND_HZ[0]:g}-{WANDER_BAND_HZ[1]:g} Hz up to "
+                     f"{a['max']['wander']:.0f}x its white noise's power, not repeating from cycle to cycle ({w['records']} sine records, "
+                     f"drives {', '.join(f'{x:g}' for x in w['frequencies_Hz'][:6])} Hz): air currents in the beam, a moving bath, a sensor's drift")
     return "; ".join(parts)
