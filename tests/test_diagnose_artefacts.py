@@ -1,5 +1,5 @@
 """Recording artefacts (labrig/diagnose/artefacts.py): readings that leave their signal for a few samples, narrow
-lines that neither the drive nor the mains explains and a wander that does not repeat, read off the sine records of the suite's clean paper sweep with
+lines that neither the drive nor the mains explains, a wander that does not repeat and noise that follows the drive, read off the sine records of the suite's clean paper sweep with
 such things written into it. The forms here are the test's own (none is one of the held-out sets' structures)."""
 
 import copy
@@ -38,6 +38,7 @@ def test_the_clean_sweep_carries_no_recording_artefact(clean):
     assert a["records_read"] >= 20 and not a["flagged"], a
     assert a["max"]["burst_z"] < art.BURST_Z and a["max"]["line_power"] < art.LINE_POWER
     assert 0.5 < a["max"]["wander"] < art.WANDER_POWER / 3  # white: the low band's power is the white band's
+    assert 1.0 < a["max"]["phase_noise"] < art.PHASE_NOISE / 2  # stationary: the same level at every phase
 
 
 @pytest.mark.parametrize("fault", ["sentinel", "frozen"])
@@ -97,6 +98,24 @@ def test_a_wander_that_does_not_repeat_is_found_and_a_slow_drift_is_not(clean):
     assert "wanders" in art.detail(a)
     b = art.artefacts(creep)
     assert not b["flagged"] and b["max"]["wander"] < art.WANDER_POWER / 3, b["max"]
+
+
+def test_noise_that_grows_with_the_range_follows_the_drives_phase(clean):
+    """A triangulation head whose noise grows with the target's distance from its rest (the spot spreads off
+    focus): white noise scaled by the bend, up to four times the laser's own at the sine's peaks. The noise follows
+    the drive's phase in the displacement, not the current; the same noise at a constant level does not."""
+    follow, flat = copy.deepcopy(clean), copy.deepcopy(clean)
+    rng = np.random.default_rng(9)
+    for a, b in zip(sines(follow), sines(flat)):
+        bend = np.abs(a.d - np.median(a.d))
+        sigma = 4.0 * 0.5e-6 * bend / max(np.percentile(bend, 99), 1e-12)
+        a.d = a.d + sigma * rng.standard_normal(a.d.size)
+        b.d = b.d + float(np.sqrt(np.mean(sigma**2))) * rng.standard_normal(b.d.size)
+    a = art.artefacts(follow)
+    assert a["phase_noise"]["flagged"] and a["phase_noise"]["channels"] == ["displacement"], a["phase_noise"]
+    assert "follows the drive's phase" in art.detail(a)
+    b = art.artefacts(flat)
+    assert not b["phase_noise"]["flagged"] and b["phase_noise"]["median"]["displacement"] < art.PHASE_NOISE / 2, b["phase_noise"]
 
 
 def test_a_vibration_line_in_an_import_is_unexplained_and_located(bench_sessions, tmp_path):
