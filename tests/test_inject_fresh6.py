@@ -78,6 +78,22 @@ def test_trigger_clock():
             assert b.cols["v_V"][k] >= 0.5 > b.cols["v_V"][k - 1]
 
 
+EFFECTS = {"back_relaxation", "faradaic_current", "hysteresis", "time_delay", "sensor_offset", "clamp_relaxation",
+           "dehydration", "strain_resistance", "large_deflection", "mains_pickup"}
+
+
+def check_forms_new(forms: dict, changes: dict, earlier: list[dict], monkeypatch) -> None:
+    """tests/test_inject_fresh2.py's check (each form found by inject.form_of, none named as in bench/inject.py) with
+    a set's forms and columns, and no name of the ``earlier`` sets' forms; two forms per effect, four outside."""
+    listed = [(t, n, fn) for t, named in forms.items() for n, fn in named.items()]
+    monkeypatch.setattr(t2, "FORMS", listed)
+    monkeypatch.setattr(t2, "CHANGES", changes)
+    t2.test_forms_are_registered_and_new()
+    assert not {n for d in earlier for named in d.values() for n in named} & set(changes)
+    assert set(forms) == EFFECTS | {"unexplained"}
+    assert all(len(named) == (4 if t == "unexplained" else 2) for t, named in forms.items())
+
+
 def check_case_list(cases_of, forms: dict, seeds: set, variant: str) -> list:
     """A set of 34 cases with distinct names: every form once (outside structures twice), six clean, on its seeds,
     bases and variants registered, its new variant used, ``cases_of("none")`` the clean ones. Returns the cases."""

@@ -22,7 +22,7 @@ import inject_fresh6  # noqa: E402
 import inject_fresh7 as f7  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE  # noqa: E402
-from test_inject_fresh6 import check_case_list  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new  # noqa: E402
 
 DISP, CUR, FORCE, Z, V = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
 CHANGES = {  # the columns each form must change (every other column, t_s included, stays bit for bit)
@@ -35,8 +35,6 @@ CHANGES = {  # the columns each form must change (every other column, t_s includ
     "serial_crosstalk": DISP | CUR,
 }
 FORMS = [(t, n, fn) for t, forms in f7.FRESH7_FORMS.items() for n, fn in forms.items()]
-EFFECTS = {"back_relaxation", "faradaic_current", "hysteresis", "time_delay", "sensor_offset", "clamp_relaxation",
-           "dehydration", "strain_resistance", "large_deflection", "mains_pickup"}
 
 
 @pytest.mark.parametrize("truth,name,fn", FORMS, ids=[n for _, n, _ in FORMS])
@@ -50,14 +48,9 @@ def test_form_changes_its_signals_only(truth, name, fn, monkeypatch):
 def test_forms_are_registered_and_new(monkeypatch):
     """tests/test_inject_fresh2.py's check (each form found by inject.form_of, none named as in bench/inject.py) with
     this set's forms, and no name of fresh2 to fresh6 either; two forms per effect, four outside."""
-    monkeypatch.setattr(t2, "FORMS", FORMS)
-    monkeypatch.setattr(t2, "CHANGES", CHANGES)
-    t2.test_forms_are_registered_and_new()
-    earlier = {n for d in (inject_fresh2.FRESH2_FORMS, inject_fresh3.FRESH3_FORMS, inject_fresh4.FRESH4_FORMS,
-                           inject_fresh5.FRESH5_FORMS, inject_fresh6.FRESH6_FORMS) for forms in d.values() for n in forms}
-    assert not earlier & set(CHANGES)
-    assert set(f7.FRESH7_FORMS) == EFFECTS | {"unexplained"}
-    assert all(len(forms) == (4 if t == "unexplained" else 2) for t, forms in f7.FRESH7_FORMS.items())
+    earlier = [inject_fresh2.FRESH2_FORMS, inject_fresh3.FRESH3_FORMS, inject_fresh4.FRESH4_FORMS, inject_fresh5.FRESH5_FORMS,
+               inject_fresh6.FRESH6_FORMS]
+    check_forms_new(f7.FRESH7_FORMS, CHANGES, earlier, monkeypatch)
 
 
 def test_isolated_monitor_delays_the_recorded_voltage():

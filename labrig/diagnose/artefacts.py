@@ -190,6 +190,22 @@ def _merge(freqs: list[float]) -> list[float]:
     return [float(np.median(g)) for g in out]
 
 
+def _guarded(f: np.ndarray, fs: float, f0: float, orders: int, sidebands: int = 0) -> np.ndarray:
+    """Bins above the lowest ``LOW_BINS``, clear of the drive's first ``orders`` harmonics and of the mains' lines
+    with ``sidebands`` drive harmonics either side (a line modulated by the drive stays the mains'), each taken
+    where it aliases at the record's rate."""
+    df = f[1] - f[0]
+    ok = np.ones(f.size, bool)
+    ok[:LOW_BINS] = False
+    for g in _alias(f0 * np.arange(1, orders + 1), fs):
+        ok[np.abs(f - g) <= GUARD_BINS * df] = False
+    for base in MAINS_HZ:
+        lines = base * np.arange(1, int(fs / base) + 2)
+        for g in _alias((lines[:, None] + f0 * np.arange(-sidebands, sidebands + 1)).ravel(), fs):
+            ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
+    return ok
+
+
 def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[float, float]], float]:
     """(frequency Hz, power over the neighbours' mean) of each bin of a foreign line in residual ``e``, and the
     largest such ratio of any bin searched (the margin a clean record leaves)."""
@@ -197,34 +213,11 @@ def _foreign_lines(e: np.ndarray, fs: float, f0: float) -> tuple[list[tuple[floa
     w = np.hanning(n)
     p = np.abs(np.fft.rfft((e - e.mean()) * w)) ** 2
     f = np.fft.rfftfreq(n, 1.0 / fs)
-    df = f[1] - f[0]
     ratio = p / np.maximum(_neighbour_mean(p), 1e-300)
-    ok = np.ones(f.size, bool)
-    ok[:LOW_BINS] = False
-    drive = _alias(f0 * np.arange(1, ALIAS_ORDERS + 1), fs)
-    for g in drive:
-        ok[np.abs(f - g) <= GUARD_BINS * df] = False
-    for base in MAINS_HZ:
-        for m in range(1, int(fs / base) + 2):
-            for j in range(-3, 4):
-                g = float(_alias(np.array([m * base + j * f0]), fs)[0])
-                ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
+    ok = _guarded(f, fs, f0, ALIAS_ORDERS, sidebands=3)
     peak = _local_max(ratio)
     hit = ok & (ratio > LINE_POWER) & peak
     return [(float(f[k]), float(ratio[k])) for k in np.flatnonzero(hit)], float(ratio[ok].max(initial=0.0))
-
-
-def _guarded(f: np.ndarray, fs: float, f0: float, orders: int) -> np.ndarray:
-    """Bins clear of the drive's first ``orders`` harmonics (and their aliases) and of the mains' lines."""
-    df = f[1] - f[0]
-    ok = np.ones(f.size, bool)
-    ok[:LOW_BINS] = False
-    for g in _alias(f0 * np.arange(1, orders + 1), fs):
-        ok[np.abs(f - g) <= GUARD_BINS * df] = False
-    for base in MAINS_HZ:
-        for g in _alias(base * np.arange(1, int(fs / base) + 2), fs):
-            ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
-    return ok
 
 
 def _wander(e: np.ndarray, fs: float, f0: float) -> float:
