@@ -91,12 +91,13 @@ class CaseCache:
     """Cases run once and shared (the test suite's paper sweeps). ``get`` runs what is missing together with every
     case announced in ``expected`` (case -> diagnosed, or fitted only), in one pool, so the workers stay busy
     instead of one sweep at a time. A case asked for diagnosed after it was fitted only is diagnosed then (its
-    session file is reused)."""
+    session file is reused). A case that raised is remembered: asking for it raises again, at once."""
 
     def __init__(self, folder: str | Path, expected: dict[tuple[str, int], bool] | None = None, protocol: str = "paper-sweep", jobs: int = 2):
         self.folder, self.protocol, self.jobs = Path(folder), protocol, jobs
         self._expected = dict(expected or {})
         self._done: dict[tuple[str, int], CaseResult] = {}
+        self._failed: dict[tuple[str, int], BaseException] = {}
 
     def _lacks(self, case: tuple[str, int], diagnosed: bool) -> bool:
         return case not in self._done or (diagnosed and not self._done[case].verdict)
@@ -108,9 +109,19 @@ class CaseCache:
             for c in cases:
                 want[c] = want.get(c, False) or diagnosed
             missing = [c for c, d in want.items() if self._lacks(c, d)]
-            fit_only = frozenset(c for c in missing if not want[c])
-            for r in run_cases(missing, self.folder, self.protocol, self.jobs, fit_only=fit_only):
-                self._done[(r.scenario, r.seed)] = r
+            missing = [c for c in missing if c not in self._failed]
+            ctx = multiprocessing.get_context("spawn")
+            with ProcessPoolExecutor(self.jobs, mp_context=ctx) as pool:
+                futures = {c: pool.submit(run_case, (*c, str(self.folder), self.protocol, want[c])) for c in missing}
+                for c, fut in futures.items():
+                    # one case's fault fails the tests that read it, not the others, and is not run again
+                    try:
+                        self._done[c] = fut.result()
+                    except Exception as exc:  # noqa: BLE001 - re-raised below, for the tests that ask for it
+                        self._failed[c] = exc
+        for c in cases:
+            if c in self._failed:
+                raise RuntimeError(f"bench case {c[0]} seed {c[1]} failed: {self._failed[c]!r}") from self._failed[c]
         return [self._done[c] for c in cases]
 
 

@@ -48,3 +48,24 @@ def test_a_strip_off_along_its_valley_is_the_baselines_own_error_not_structure(c
     assert -SHIFT - 0.5 < b["refitted"]["params"]["electrical_valley_sd"] < -0.5
     assert b["refitted"]["blocks"]["frf_d"] < min(b["accuracy"]["frf_d"], 0.7 * b["blocks"]["frf_d"])
     assert all(b["refitted"]["blocks"][k] <= STRUCTURE_MARGIN * b["accuracy"][k] for k in b["refitted"]["blocks"])
+
+
+def test_a_degenerate_covariance_gives_no_valley():
+    """A nearly singular Jacobian (a parameter the data do not tell) gives a covariance whose column through R
+    moves another value by tens of decades per standard error: no valley a spectrum allows (10**step would
+    overflow in the refit), so the fit reports none and the diagnosis holds the electrical values."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.fit.seed000 import VALLEY_MAX_STEP, valley
+
+    names = ["log_R", "log_R_c_p1", "log_Q0c_p1"]
+    sane = np.array([[1e-4, -8e-5, 2e-5], [-8e-5, 1e-4, 0.0], [2e-5, 0.0, 1e-4]])
+    told = valley(SimpleNamespace(covar=sane, var_names=names), "log_R")
+    assert told["log_R"] == pytest.approx(0.01) and told["log_R_c_p1"] == pytest.approx(-0.008)
+    loose = sane.copy()
+    loose[2, 0] = loose[0, 2] = 0.01 * (VALLEY_MAX_STEP * 1.5)  # Q0c moves 1.5 caps per standard error of R
+    loose[2, 2] = 1.0
+    assert valley(SimpleNamespace(covar=loose, var_names=names), "log_R") == {}
+    assert valley(SimpleNamespace(covar=None, var_names=names), "log_R") == {}

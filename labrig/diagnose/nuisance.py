@@ -128,7 +128,7 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
         x0 = np.clip(np.r_[th0, 0.0, 0.0, [0.0] * nv, [0.0] * len(p_fit)], lo, hi)
         try:
             r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50)
-        except (ValueError, FloatingPointError):
+        except (ValueError, FloatingPointError, OverflowError):
             continue
         if np.isfinite(r.cost) and r.cost < cost:
             best, cost = r.x, r.cost

@@ -34,6 +34,9 @@ from labrig.records import RecordKind
 
 REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
 MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
+# the staged valley's largest step (log10 values: decades; exponents: their own units) per standard error of R:
+# clean sessions give at most 0.02, a degenerate covariance tens or hundreds
+VALLEY_MAX_STEP = 1.0
 
 
 def base_specimen(sample: dict[str, Any]) -> Specimen:
@@ -155,13 +158,18 @@ def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> t
 def valley(res: lmfit.minimizer.MinimizerResult, name: str) -> dict[str, float]:
     """Each varied parameter's change along one standard error of ``name`` with the others at their conditional
     best (the covariance's column over its standard deviation): the fit's shallowest valley through that parameter.
-    Empty where the fit has no covariance."""
+    Empty where the fit has no usable covariance (none, not finite, or any step beyond ``VALLEY_MAX_STEP``)."""
     cov, names = getattr(res, "covar", None), list(getattr(res, "var_names", []) or [])
     if cov is None or name not in names:
         return {}
     k = names.index(name)
     sd = math.sqrt(cov[k, k]) if cov[k, k] > 0 else 0.0
-    return {n: float(cov[j, k] / sd) for j, n in enumerate(names)} if sd and np.all(np.isfinite(cov[:, k])) else {}
+    if not sd or not np.all(np.isfinite(cov[:, k])):
+        return {}
+    step = {n: float(cov[j, k] / sd) for j, n in enumerate(names)}
+    # A covariance from a nearly singular Jacobian (a parameter the data do not tell, say on a run the machine's
+    # load slowed) gives steps of tens of decades: no valley a spectrum allows, and 10**step overflows downstream
+    return step if max(map(abs, step.values())) <= VALLEY_MAX_STEP else {}
 
 
 def fit_frf(data: list[PressureData], priors: dict[float, Specimen], electrical: lmfit.Parameters) -> lmfit.Parameters:
