@@ -14,6 +14,12 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
+# The suite's simulated sweeps (tests/conftest.py's shared ones, the report's) run their clock at this many times
+# real time. At labrig run's 1000x every millisecond the host spends between records is a simulated second: on a
+# machine loaded by other work (the two test workers, CI's neighbours) the paper sweep's ~2.9 ks (simulated) stretched
+# to 22 ks and a drying strip's drift with it. At 100x the host's lag adds ~10 %, loaded or not (docs/diagnosis.md).
+SUITE_TIME_SCALE = 100.0
+
 
 @dataclass(frozen=True)
 class CaseResult:
@@ -40,8 +46,10 @@ class CaseResult:
 
 
 def make_session(args: tuple) -> Path:
-    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder`` (a finished run kept there is reused)."""
+    """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder`` (a finished run kept there is reused); a
+    sixth element sets the simulated bench's time scale (default: ``labrig run``'s)."""
     name, seed, folder, protocol = args[:4]
+    scale = {"time_scale": args[5]} if len(args) > 5 and args[5] else {}
     from labrig.session_run import RunRequest, execute
     from mock_devices import scenarios
 
@@ -52,7 +60,7 @@ def make_session(args: tuple) -> Path:
         # the simulated bench runs on a wall-scaled clock: on an overloaded machine its clamp servo can miss a
         # 180 s (simulated) timeout; such a run is a fault of the bench, not data, and is run once more
         path = Path(folder) / f"{name.replace('+', '_')}_{seed}_{attempt}.h5"
-        res = execute(RunRequest(protocol, path, effects=scenarios.effects_for(name, seed), seed=seed))
+        res = execute(RunRequest(protocol, path, effects=scenarios.effects_for(name, seed), seed=seed, **scale))
         if res.exit_code == 0:
             return path.rename(done)
     raise RuntimeError(f"{name} seed {seed}: the run failed twice ({res.exit_code}): {getattr(res, 'reason', '')}")
@@ -60,7 +68,7 @@ def make_session(args: tuple) -> Path:
 
 def run_case(args: tuple) -> CaseResult:
     """Run ``protocol`` with scenario ``name`` and ``seed`` into ``folder``, then fit and diagnose it; with a fifth
-    element False, fit only (the diagnosis' fields left empty: ``verdict`` "")."""
+    element False, fit only (the diagnosis' fields left empty: ``verdict`` ""); a sixth: ``make_session``'s."""
     name, seed = args[0], args[1]
     from labrig.analysis import load_and_fit, run_diagnosis
     from labrig.jsonable import jsonable
@@ -93,8 +101,9 @@ class CaseCache:
     instead of one sweep at a time. A case asked for diagnosed after it was fitted only is diagnosed then (its
     session file is reused). A case that raised is remembered: asking for it raises again, at once."""
 
-    def __init__(self, folder: str | Path, expected: dict[tuple[str, int], bool] | None = None, protocol: str = "paper-sweep", jobs: int = 2):
-        self.folder, self.protocol, self.jobs = Path(folder), protocol, jobs
+    def __init__(self, folder: str | Path, expected: dict[tuple[str, int], bool] | None = None, protocol: str = "paper-sweep", jobs: int = 2,
+                 time_scale: float | None = None):
+        self.folder, self.protocol, self.jobs, self.time_scale = Path(folder), protocol, jobs, time_scale
         self._expected = dict(expected or {})
         self._done: dict[tuple[str, int], CaseResult] = {}
         self._failed: dict[tuple[str, int], BaseException] = {}
@@ -112,7 +121,7 @@ class CaseCache:
             missing = [c for c in missing if c not in self._failed]
             ctx = multiprocessing.get_context("spawn")
             with ProcessPoolExecutor(self.jobs, mp_context=ctx) as pool:
-                futures = {c: pool.submit(run_case, (*c, str(self.folder), self.protocol, want[c])) for c in missing}
+                futures = {c: pool.submit(run_case, (*c, str(self.folder), self.protocol, want[c], self.time_scale)) for c in missing}
                 for c, fut in futures.items():
                     # one case's fault fails the tests that read it, not the others, and is not run again
                     try:

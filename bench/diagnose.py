@@ -118,7 +118,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)",
           "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
           "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
-          "fresh8": "fresh8 held-out set (unseen until diagnosed)"}
+          "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

@@ -16,6 +16,7 @@ _bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed 
 BENCH_TIMEOUT_S = 3600  # the test that first asks for the shared sweeps waits for all of them (~1 min on an idle 2-core machine, far longer at load 10)
 
 
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own, which reads the groups
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     """Collect every selected module's ``BENCH_CASES`` (the simulated paper sweeps it reads, fitted and diagnosed)
     and ``BENCH_FITS`` (fitted only), so the shared sweeps run in one pool; the tests that read them get the long
@@ -28,6 +29,8 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     for item in items:
         if "bench_sessions" in getattr(item, "fixturenames", ()):
             item.add_marker(pytest.mark.timeout(BENCH_TIMEOUT_S))
+            # one worker runs the shared sweeps (pytest-xdist, --dist loadgroup): each worker would run its own
+            item.add_marker(pytest.mark.xdist_group("bench_sessions"))
 
 
 @pytest.fixture(scope="session")
@@ -35,11 +38,11 @@ def bench_sessions(tmp_path_factory: pytest.TempPathFactory):
     """Paper sweeps on the simulated bench (scenario, seed), each run, fitted and diagnosed once for the whole test
     session, exactly as ``labrig run paper-sweep --sim --scenario NAME --seed N --fit --diagnose`` does (or only
     fitted, as ``--fit``, for the modules' ``BENCH_FITS``; bench/coverage.py: CaseCache)."""
-    from bench.coverage import CaseCache
+    from bench.coverage import SUITE_TIME_SCALE, CaseCache
 
-    # three workers on two cores: a run spends part of its time waiting on the simulated bench's scaled clock, and a
-    # third worker fills it (40 sweeps: 326 s against ~375 s with two; a run the overloaded bench faults is rerun)
-    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases, jobs=3)
+    # three workers on two cores: a run spends most of its time waiting on the simulated bench's scaled clock, and a
+    # third worker fills it (a run the overloaded bench faults is rerun)
+    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases, jobs=3, time_scale=SUITE_TIME_SCALE)
 
 
 def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:

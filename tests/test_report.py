@@ -17,6 +17,7 @@ from pathlib import Path
 import h5py
 import pytest
 
+from bench.coverage import SUITE_TIME_SCALE
 from labrig.cli import main
 from labrig.session_run import RunRequest, execute
 from labrig.store import SessionFile
@@ -124,7 +125,8 @@ def sweep(tmp_path_factory):
     d = tmp_path_factory.mktemp("report")
     (d / "short.toml").write_text(SHORT_SWEEP)
     path = d / "mains.h5"
-    assert execute(RunRequest(str(d / "short.toml"), path, effects=scenarios.effects_for("mains_pickup", 1), seed=1)).exit_code == 0
+    assert execute(RunRequest(str(d / "short.toml"), path, effects=scenarios.effects_for("mains_pickup", 1), seed=1,
+                                 time_scale=SUITE_TIME_SCALE)).exit_code == 0
     rc, fit_out = _run(["fit", str(path), "--json", "--seed001", "off"])
     assert rc == 0
     SessionFile(path).write_analysis("fit_seed001", {"result_json": json.dumps(SEED001)})
