@@ -267,7 +267,7 @@ def test_with_the_simulated_world() -> None:
         out = rig.run_finite(drive, fs)
         np.testing.assert_allclose(out["v_V"], drive, atol=5e-3)
         assert np.all(np.isfinite(out["disp_m"])) and np.ptp(out["disp_m"]) > 0
-        rig.start_continuous(fs, drive_block=drive[:1000], buffer_s=30.0)
+        rig.start_continuous(fs, drive_block=drive[:1000], buffer_s=BUFFER_S)  # 30 s was 30 wall ms: overrun beside the test workers
         blocks = [rig.read_block(1000) for _ in range(3)]
         rig.stop()
         assert blocks[2]["t_s"][0] == pytest.approx(2.0)

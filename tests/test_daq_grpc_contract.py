@@ -59,7 +59,7 @@ def record_calls() -> dict[str, list[str]]:
             rig.run_finite(np.sin(np.linspace(0, 6.28, 500)), 1000.0)
         out["finite"] = log.take()
         with Daq(grpc_target=sim.address) as rig:
-            rig.start_continuous(100.0, drive_block=np.sin(np.linspace(0, 6.28, 50)), buffer_s=100.0)
+            rig.start_continuous(100.0, drive_block=np.sin(np.linspace(0, 6.28, 50)), buffer_s=10_000.0)  # 10 wall s: no overrun at load
             rig.read_block(100)
             rig.read_block(100)
             rig.stop()
