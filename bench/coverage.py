@@ -84,13 +84,17 @@ def run_case(args: tuple) -> CaseResult:
                       float(out["gain"]["delta_bic"]), time.perf_counter() - t0, out, str(path), fit)
 
 
+def spawn_pool(jobs: int) -> ProcessPoolExecutor:
+    """``jobs`` fresh worker processes (spawned: no Qt or threads inherited)."""
+    return ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"))
+
+
 def run_cases(cases: list[tuple[str, int]], folder: str | Path, protocol: str = "paper-sweep", jobs: int = 2, make_only: bool = False,
               fit_only: frozenset = frozenset()) -> list:
     """Every (scenario, seed) case, ``jobs`` at a time in fresh processes (spawned: no Qt or threads inherited):
     run, fitted and diagnosed (``CaseResult``; the cases in ``fit_only`` fitted only), or with ``make_only`` only run
     (the session paths)."""
-    ctx = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(jobs, mp_context=ctx) as pool:
+    with spawn_pool(jobs) as pool:
         return list(pool.map(make_session if make_only else run_case,
                              [(n, s, str(folder), protocol, (n, s) not in fit_only) for n, s in cases]))
 
@@ -119,8 +123,7 @@ class CaseCache:
                 want[c] = want.get(c, False) or diagnosed
             missing = [c for c, d in want.items() if self._lacks(c, d)]
             missing = [c for c in missing if c not in self._failed]
-            ctx = multiprocessing.get_context("spawn")
-            with ProcessPoolExecutor(self.jobs, mp_context=ctx) as pool:
+            with spawn_pool(self.jobs) as pool:
                 futures = {c: pool.submit(run_case, (*c, str(self.folder), self.protocol, want[c], self.time_scale)) for c in missing}
                 for c, fut in futures.items():
                     # one case's fault fails the tests that read it, not the others, and is not run again

@@ -35,7 +35,7 @@ from labrig.records import RecordKind
 REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
 MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
 # the staged valley's largest step (log10 values: decades; exponents: their own units) per standard error of R:
-# clean sessions give at most 0.02, a degenerate covariance tens or hundreds
+# clean sessions give at most 0.02, drying strips 0.5-14 in the cached sets, beyond 100 where a CI run overflowed
 VALLEY_MAX_STEP = 1.0
 
 
@@ -167,8 +167,8 @@ def valley(res: lmfit.minimizer.MinimizerResult, name: str) -> dict[str, float]:
     if not sd or not np.all(np.isfinite(cov[:, k])):
         return {}
     step = {n: float(cov[j, k] / sd) for j, n in enumerate(names)}
-    # A covariance from a nearly singular Jacobian (a parameter the data do not tell, say on a run the machine's
-    # load slowed) gives steps of tens of decades: no valley a spectrum allows, and 10**step overflows downstream
+    # Spectra no single strip fits (a strip drying through the session) loosen the covariance to steps of decades:
+    # no valley a spectrum allows, and 10**step can overflow downstream
     return step if max(map(abs, step.values())) <= VALLEY_MAX_STEP else {}
 
 
