@@ -188,13 +188,16 @@ class World:
             self._history = [h for h in self._history if h.t1 <= t0 + 1e-12]
             sp = self.specimen(t0)
             # drive history resampled onto this record's grid, then the record, then a tail at rest
+            # on this record's own sample grid (sample j at t0 + (j - k0) / fs): a grid counted from the oldest segment
+            # sits up to a sample off the record, and the strip then sees the history shifted against the record, a
+            # glitch at every block boundary whose place depends on how the DAQ happened to block the record
             start = self._history[0].t0 if self._history else t0
-            k0 = int(np.floor((t0 - start) * fs))
+            k0 = int(np.ceil((t0 - start) * fs - 1e-9))
             tail = min(max(n, int(fs)), int(30 * fs))
             u = np.zeros(k0 + n + tail)
-            grid = start + np.arange(k0) / fs
+            grid = t0 + (np.arange(k0) - k0) / fs
             for h in self._history:
-                sel = (grid >= h.t0) & (grid < h.t1)
+                sel = (grid >= h.t0 - 1e-6 / fs) & (grid < h.t1 - 1e-6 / fs)  # contiguous blocks' ends differ by rounding
                 if sel.any():
                     u[:k0][sel] = np.interp(grid[sel], h.t0 + np.arange(h.v.size) / h.fs, h.v)
             u[k0 : k0 + n] = v

@@ -66,3 +66,31 @@ def test_impedance_noise_is_small_and_seeded():
     b = World(ScaledClock(1000.0), seed=3).impedance(np.array([1.0, 10.0]), 0.01, 0.0)
     exact = imp.impedance(2j * np.pi * np.array([1.0, 10.0]), presets.get("paper").specimen())
     assert np.array_equal(a, b) and np.allclose(a, exact, rtol=0.01)
+
+
+def test_a_record_is_the_same_however_the_daq_blocks_it():
+    """The DAQ asks for a record in blocks as the host reads (their sizes follow the host's load): the strip must see
+    one drive history, so the blocks put together equal the record run whole, after an earlier record at another rate
+    and a start off that record's sample grid."""
+    fs, f, t0 = 215.443, 4.30887, 20.3337
+
+    def run(sizes):
+        b = World(ScaledClock(1000.0), noise=QUIET)
+        b.run_record(0.0, 200.0, signals.sine(0.5, 0.43, 20.0, 200.0))
+        v = signals.sine(0.5, f, 6.0, fs)
+        out, k = [], 0
+        for n in sizes(v.size):
+            out.append(b.run_record(t0 + k / fs, fs, v[k : k + n])["disp_m"])
+            k += n
+        assert k == v.size
+        return np.concatenate(out)
+
+    rng = np.random.default_rng(0)
+
+    def blocks(n):
+        cuts = np.sort(rng.choice(np.arange(20, n - 20), size=12, replace=False))
+        return np.diff(np.concatenate([[0], cuts, [n]]))
+
+    whole = run(lambda n: [n])
+    for _ in range(3):
+        assert np.max(np.abs(run(blocks) - whole)) < 1e-3 * np.max(np.abs(whole))
