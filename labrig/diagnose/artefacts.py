@@ -48,7 +48,7 @@ from typing import Any
 import numpy as np
 from scipy.ndimage import median_filter
 
-from labrig.diagnose.features import MAINS_HZ
+from labrig.estimate import MAINS_HZ
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
 from labrig.records import SINE_KINDS
 

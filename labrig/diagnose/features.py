@@ -15,15 +15,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from labrig.estimate import SineEstimate, sine_estimate
+from labrig.estimate import MAINS_HZ, MAINS_ORDERS, SineEstimate, sine_estimate
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_cycles, step_onset
 from labrig.physics import timeresp, transfer
 from labrig.physics.params import Specimen
 from labrig.records import SINE_KINDS
 
 STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of interest are slow)
-MAINS_HZ = (50.0, 60.0)
-MAINS_ORDERS = 7  # the mains' harmonics read: a triac's or rectifier's chopped current is rich in them, a transformer's saturation too
 LINE_HZ = tuple(sorted({base * n for base in MAINS_HZ for n in range(1, MAINS_ORDERS + 1)}))
 # the channels a line is read on: (what it is, parameter prefix, parameter unit, SI per unit)
 LINE_CHANNELS = {"d": ("displacement", "disp", "um", 1e-6), "i": ("current", "cur", "uA", 1e-6), "v": ("drive monitor", "volt", "mV", 1e-3)}
