@@ -34,8 +34,11 @@
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 94-96 (paper,
   seed-001, 32 mm strips), a new data shape (a software-timed loop: each sample stamped when the host took it, the
   stamps uneven), six clean sessions.
+* Fresh9 held-out set (``--set fresh9``, bench/inject_fresh9.py ``fresh9_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 97-99, made on
+  the simulated bench after its block fix (every earlier set's bases carry the old bench's block glitches).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -118,7 +121,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh5": "fresh5 held-out set (diagnosed once unseen at 0fb1eb9; seen since)",
           "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
           "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
-          "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)"}
+          "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)",
+          "fresh9": "fresh9 held-out set (unseen until diagnosed)"}
 
 
 def validation(a, name: str = "validation") -> list:

@@ -56,7 +56,8 @@ def sim(bench: RCBench):
 
 @pytest.fixture
 def an(sim: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager):
-    driver = ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=0.5)
+    # 2 s for a reply: short enough for the timeout fault, long enough for a busy CI machine (0.5 s once ran out there)
+    driver = ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=2.0)
     yield driver
     driver.close()
 
