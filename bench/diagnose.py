@@ -122,7 +122,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
           "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
           "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)",
-          "fresh9": "fresh9 held-out set (unseen until diagnosed)"}
+          "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
