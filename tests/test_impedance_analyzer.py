@@ -151,7 +151,7 @@ def test_fault_disconnect(an: ImpedanceAnalyzer, sim: ImpedanceAnalyzerSim, rm: 
     with pytest.raises(Disconnected):
         ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=0.5)
     sim.clear_fault()  # the instrument is back on the same port
-    with ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=0.5) as again:
+    with ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=2.0) as again:
         assert again.identify() == sim.idn
 
 
@@ -213,7 +213,7 @@ def test_inject_rejects_unknown_fault(sim: ImpedanceAnalyzerSim) -> None:
 
 
 def test_close_leaves_source_safe(sim: ImpedanceAnalyzerSim, rm: pyvisa.ResourceManager) -> None:
-    with ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=0.5) as an:
+    with ImpedanceAnalyzer(sim.resource_name, resource_manager=rm, timeout_s=2.0) as an:
         an.configure_list([1.0, 10.0], ac_V=0.5, bias_V=1.5)
         assert sim.bias_on and sim.ac_V == 0.5
     assert (sim.bias_on, sim.bias_V, sim.ac_V) == (False, 0.0, sim.ac_range_V[0])
