@@ -101,3 +101,17 @@ def test_local_pool_gives_the_same_numbers():
     with PopulationMap(fh.evaluate_chunk, (spec,), "process", n_workers=2) as pm:
         np.testing.assert_array_equal(pm(X), ref)
         np.testing.assert_array_equal(pm(X[:9]), ref[:9])  # second call: args stay installed
+
+
+@pytest.mark.parametrize("wn_over_nyquist", [0.5, 0.95, 1.4, 2.2, 3.7])
+def test_the_mode_stays_stable_at_any_rate(wn_over_nyquist):
+    """The bilinear map is stable for any stable mode, also one above Nyquist (a fit at a low rate can return one):
+    prewarped there, tan folds negative and the filter diverged."""
+    fs = 250.0
+    p = TRUTH.vector(hm.MECH_NAMES).copy()
+    p[hm.MECH_NAMES.index("wn")] = wn_over_nyquist * np.pi * fs
+    sos = hm.mech_discrete(p[None], fs)[0]
+    poles = np.concatenate([np.roots(sec[3:]) for sec in sos])
+    assert np.all(np.abs(poles) < 1.0)
+    step = hm.mechanical_batch(p[None], np.ones((1, int(20 * fs))), fs)[0]
+    assert np.all(np.isfinite(step)) and abs(step[-1]) < 2 * abs(p[0] / p[1])  # heads for K / eps, no further

@@ -182,14 +182,23 @@ def mech_tf(K: float, eps: float, wn: float, zeta: float) -> tuple[np.ndarray, n
     return np.array([K * wn**2]), np.polymul([1.0, eps], [1.0, 2 * zeta * wn, wn**2])
 
 
+PREWARP_MAX = 0.9  # of Nyquist (pi fs rad/s): the highest frequency the mode's bilinear map is prewarped at
+
+
 def mech_discrete(theta_m: np.ndarray, fs: float) -> np.ndarray:
     """Bilinear (Tustin) sections prewarped at wn for P candidates: sos (P, 2, 6) for scipy's sosfilt.
 
     Two sections (integrator, mode), each in closed form: a single third-order polynomial with a pole
     at 1 - eps/fs loses ~1e-9 of accuracy to round-off in its coefficients.
+
+    The prewarp frequency is wn held below ``PREWARP_MAX`` of Nyquist: prewarped at a mode above Nyquist, tan(wn /
+    2 fs) folds negative, c < 0 maps the left half-plane outside the unit circle and the filter diverges (an NSGA-II
+    quick fit at 125 Hz returned wn = 1114 rad/s, stable there by the fold; at 250 Hz its step grew to 1e65 mm).
+    Any c > 0 keeps the map stable; below the cap the prewarp is exact at wn.
     """
     K, eps, wn, zeta = np.atleast_2d(np.asarray(theta_m, float)).T
-    c = wn / np.tan(wn / (2.0 * fs))  # s = c (1 - q)/(1 + q), q = z^-1
+    wp = np.minimum(wn, PREWARP_MAX * np.pi * fs)
+    c = wp / np.tan(wp / (2.0 * fs))  # s = c (1 - q)/(1 + q), q = z^-1
     sos = np.zeros((len(K), 2, 6))
     # K/(s + eps) -> K (1 + q) / ((c + eps) + (eps - c) q)
     sos[:, 0, 0] = sos[:, 0, 1] = K / (c + eps)

@@ -41,6 +41,7 @@ def heldout_figure(s: dict[str, Any], sd: Any, most: int = 3) -> Figure | None:
     method's model (its estimates, simulated from rest on the record's drive, at the fitting rate), with each
     method's NRMSE on that record."""
     from labrig.fit.seed001 import to_record
+    from labrig.fit.seed001_identify import BUDGETS
     from labrig.physics import hammerstein as hm
     from labrig.physics.params import HammersteinParams
 
@@ -48,11 +49,13 @@ def heldout_figure(s: dict[str, Any], sd: Any, most: int = 3) -> Figure | None:
     names = [n for n in (s.get("heldout_records") or []) if n in recs][:most]
     if not names:
         return None
+    b = s.get("budget")
+    budget = BUDGETS.get(b, BUDGETS["standard"]) if isinstance(b, str) else BUDGETS["standard"]
     fig = Figure(figsize=(4.0 * len(names) + 1.0, 5.5), layout="constrained")
     axes = np.atleast_2d(fig.subplots(2, len(names), squeeze=False))
     nrmse = lambda sim, meas: np.sqrt(np.mean((sim - meas) ** 2) / max(np.mean(meas**2), 1e-300))  # noqa: E731
     for c, name in enumerate(names):
-        r = to_record(recs[name])
+        r = to_record(recs[name], budget.max_rate_Hz, budget.max_s)  # as the fit scored it (its NRMSE in the table)
         t = np.arange(r.v.size) / r.fs
         ax_i, ax_d = axes[0, c], axes[1, c]
         ax_i.plot(t, r.i * 1e3, "k-", lw=1.5, label="measured")
