@@ -111,7 +111,7 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
         inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics)))
     x = _design(tt, f, harmonics, 2)
     coef = np.linalg.lstsq(x, np.asarray(dd, float), rcond=None)[0]
-    noise_var = _noise_variance(tt, dd, np.hstack([x, _mains_columns(tt, f, harmonics)]))
+    noise_var = _noise_variance(dd, np.hstack([x, _mains_columns(tt, f, harmonics)]))
     # the phase of one cycle's fundamental scatters by (its tangential noise) / (its amplitude), at least
     with np.errstate(divide="ignore", invalid="ignore"):
         phase_var = noise_var * np.array(per_cycle_var) / 2 / np.array(per_cycle_amp) ** 2
@@ -147,11 +147,11 @@ def _mains_columns(t: np.ndarray, f: float, harmonics: int) -> np.ndarray:
     return np.hstack([np.cos(w), np.sin(w)])
 
 
-def _noise_variance(t: np.ndarray, x: np.ndarray, design: np.ndarray) -> float:
+def _noise_variance(x: np.ndarray, design: np.ndarray) -> float:
     """The residual variance of ``x`` about its least-squares fit on ``design`` (per degree of freedom)."""
     x = np.asarray(x, float)
     res = x - design @ np.linalg.lstsq(design, x, rcond=None)[0]
-    return float(res @ res) / max(t.size - design.shape[1], 1)
+    return float(res @ res) / max(x.size - design.shape[1], 1)
 
 
 def _phase_trend(per_cycle: np.ndarray, phase_var: np.ndarray | None = None) -> tuple[float, float]:
