@@ -13,6 +13,7 @@ import pytest
 from labrig.analysis import load_and_fit, run_diagnosis
 from labrig.cli import main
 from labrig.diagnose import artefacts as art
+from labrig.diagnose import spells
 from labrig.estimate.session_data import load_session
 from labrig.records import SINE_KINDS
 
@@ -39,6 +40,7 @@ def test_the_clean_sweep_carries_no_recording_artefact(clean):
     assert a["max"]["burst_z"] < art.BURST_Z and a["max"]["line_power"] < art.LINE_POWER
     assert 0.5 < a["max"]["wander"] < art.WANDER_POWER / 3  # white: the low band's power is the white band's
     assert 1.0 < a["max"]["phase_noise"] < art.PHASE_NOISE / 2  # stationary: the same level at every phase
+    assert 1.0 < a["max"]["spell"] < spells.SPELL_POWER / 1.5 and a["max"]["shift"] < spells.SHIFT_Z / 1.5, a["max"]
 
 
 @pytest.mark.parametrize("fault", ["sentinel", "frozen"])
@@ -116,6 +118,75 @@ def test_noise_that_grows_with_the_range_follows_the_drives_phase(clean):
     assert "follows the drive's phase" in art.detail(a)
     b = art.artefacts(flat)
     assert not b["phase_noise"]["flagged"] and b["phase_noise"]["median"]["displacement"] < art.PHASE_NOISE / 2, b["phase_noise"]
+
+
+def long_sines(sd, seconds: float = 8.0):
+    return [r for r in sines(sd) if float(np.ptp(r.t)) >= seconds]
+
+
+def noise(y: np.ndarray) -> float:
+    """A reading's white noise from its successive differences (robust): the signal's own change per sample is far
+    smaller at these drives' frequencies."""
+    d = np.diff(y)
+    return float(1.4826 * np.median(np.abs(d - np.median(d))) / np.sqrt(2))
+
+
+def test_a_spell_of_buffeting_is_found_and_a_steady_raised_noise_is_not(clean):
+    """A fume hood's draught buffets the strip for a few seconds: noise band-limited to 3-12 Hz, four times the
+    laser's own RMS, in the middle third of two long sine records. A spell, in the displacement; the same noise over
+    the whole of every record is a steadier laser, not a spell; in one record only it is a knock, not a pattern."""
+    from scipy import signal
+
+    rng = np.random.default_rng(11)
+
+    def buffet(r, lo: float, hi: float) -> None:
+        fs = 1.0 / float(np.median(np.diff(r.t)))
+        sos = signal.butter(2, [3.0, min(12.0, 0.4 * fs)], "bandpass", fs=fs, output="sos")
+        x = signal.sosfiltfilt(sos, rng.standard_normal(r.t.size))
+        u = (r.t - r.t[0]) / float(np.ptp(r.t))
+        r.d = r.d + 4 * noise(r.d) * x / np.std(x) * ((u >= lo) & (u < hi))
+
+    spell, steady, once = copy.deepcopy(clean), copy.deepcopy(clean), copy.deepcopy(clean)
+    for r in long_sines(spell)[2:4]:
+        buffet(r, 1 / 3, 2 / 3)
+    for r in sines(steady):
+        if float(np.ptp(r.t)) >= 2.0:
+            buffet(r, 0.0, 1.01)
+    buffet(long_sines(once)[2], 1 / 3, 2 / 3)
+    a = art.artefacts(spell)
+    assert a["spells"]["flagged"] and a["spells"]["records"] == 2 and a["spells"]["channels"] == ["displacement"], a["spells"]
+    assert not a["shifts"]["flagged"]  # (a strong spell may also carry bursts: its peaks, correlated, pass 6 sigma)
+    w = a["spells"]["worst"]
+    span = float(np.ptp(long_sines(spell)[2].t))
+    assert span / 3 - 1 < w["time_s"] < 2 * span / 3 + 1, w  # located in the spell
+    assert "rises" in art.detail(a)
+    assert not art.artefacts(steady)["spells"]["flagged"]
+    assert not art.artefacts(once)["flagged"]
+
+
+def test_a_current_that_steps_and_stays_is_a_shift_and_an_offset_is_not(clean):
+    """A rectified carrier in the current amplifier's input: the current steps by five times its noise for a third of
+    two long sine records (50 ms edges) and back. A shift, in the current; a constant offset on every record is the
+    amplifier's zero, and a slow exponential settling of the current is the strip's, neither a shift."""
+    keyed, offset, settle = copy.deepcopy(clean), copy.deepcopy(clean), copy.deepcopy(clean)
+    for r in long_sines(keyed)[1:3]:
+        t = r.t - r.t[0]
+        on, off = 0.3 * float(np.ptp(t)), 0.63 * float(np.ptp(t))
+        env = np.clip((t - on) / 0.05, 0, 1) * np.clip((off - t) / 0.05, 0, 1)
+        r.i = r.i + 5 * noise(r.i) * env
+    for r in sines(offset):
+        r.i = r.i + 5 * noise(r.i)
+    for r in sines(settle):
+        r.i = r.i + 5 * noise(r.i) * np.exp(-(r.t - r.t[0]) / 3.0)
+    a = art.artefacts(keyed)
+    assert a["shifts"]["flagged"] and a["shifts"]["records"] == 2 and a["shifts"]["channels"] == ["current"], a["shifts"]
+    w = a["shifts"]["worst"]
+    span = {r.name: float(np.ptp(r.t)) for r in long_sines(keyed)[1:3]}
+    assert w["record"] in span and min(abs(w["time_s"] / span[w["record"]] - x) for x in (0.3, 0.63)) < 0.1, w  # at an edge
+    assert "steps" in art.detail(a)
+    for sd in (offset, settle):
+        b = art.artefacts(sd)
+        assert not b["shifts"]["flagged"] and b["max"]["shift"] < spells.SHIFT_Z / 1.5, b["max"]
 
 
 def test_a_vibration_line_in_an_import_is_unexplained_and_located(bench_sessions, tmp_path):

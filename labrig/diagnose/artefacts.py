@@ -28,6 +28,10 @@ demodulated features almost untouched:
   vibrometer's dropouts at the turning points) or a contact that chatters while the strip moves makes it; a white
   noise added to the reading does not.
 
+* **spells and shifts** (spells.py): the residual's noise rises for a while and falls back (a draught, a vibration
+  or a transmitter switched on and off), or the current's level steps and stays (a rectified radio carrier, a
+  switched amplifier range), inside a record, in ``MIN_RECORDS`` records or more.
+
 No threshold of the first three kinds was set on a set of sessions: they are tails of the noise's own law. Gaussian noise exceeds 6
 sigma with probability 2e-9 per sample; a periodogram bin of noise exceeds 25 times its mean with probability
 e^-25 = 1.4e-11 (chi-square with two degrees of freedom), so a session of 10^7 samples and 10^6 bins has about
@@ -48,6 +52,7 @@ from typing import Any
 import numpy as np
 from scipy.ndimage import median_filter
 
+from labrig.diagnose import spells
 from labrig.estimate import MAINS_HZ
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
 from labrig.records import SINE_KINDS
@@ -74,6 +79,7 @@ PHASE_BINS = 8  # the cycle's phase bins the noise's level is read in
 PHASE_SAMPLES = 100  # samples each phase bin needs
 PHASE_NOISE = 4.0  # the records' median of (largest / smallest noise variance over the phase bins)
 MIN_PHASE_RECORDS = 4  # records the median needs
+CHANNELS = ("displacement", "current")
 
 
 def _alias(f: np.ndarray, fs: float) -> np.ndarray:
@@ -82,8 +88,9 @@ def _alias(f: np.ndarray, fs: float) -> np.ndarray:
     return np.minimum(g, fs - g)
 
 
-def _segment(r: TimeRecord) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
-    """(t, d, i, f0) of a sine record's whole cycles after its settling cycles, centred in time; None if too short.
+def _segment(r: TimeRecord) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float] | None:
+    """(t, d, i, f0, lead) of a sine record's whole cycles after its settling cycles, centred in time, and the time of
+    their first sample from the record's start; None if too short.
     The sample that closes the last cycle is left out: the drive is switched there (the record's end, or the next)."""
     f0 = float(r.meta.get("frequency_Hz") or 0.0)
     if r.kind not in SINE_KINDS or not f0 > 0 or r.t.size < 64:
@@ -95,7 +102,7 @@ def _segment(r: TimeRecord) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] 
     if whole < 1 or keep.sum() < 64 or not (np.all(np.isfinite(r.d[keep])) and np.all(np.isfinite(r.i[keep]))):
         return None
     t = r.t[keep] - float(np.mean(r.t[keep]))
-    return t, r.d[keep].astype(float), r.i[keep].astype(float), f0
+    return t, r.d[keep].astype(float), r.i[keep].astype(float), f0, float(r.t[keep][0] - r.t[0])
 
 
 def _design(t: np.ndarray, f0: float, fs: float) -> np.ndarray:
@@ -273,7 +280,7 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
     seg = _segment(r)
     if seg is None:
         return None
-    t, d, i, f0 = seg
+    t, d, i, f0, lead = seg
     fs = float(1.0 / np.median(np.diff(t)))
     X = _design(t, f0, fs)
     out: dict[str, Any] = {"record": r.name, "frequency_Hz": f0}
@@ -285,9 +292,24 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
         e_burst = e_burst - _running_median(e_burst, fs, f0, bool(np.any(per)))
         runs, longest, zmax = _bursts(e_burst, _quantum(y))
         lines, top = _foreign_lines(e, fs, f0)
+        slow = _without_mains(e - per, t, f0, fs)
+        quiet = slow - _running_median(slow, fs, f0, bool(np.any(per)))
+        sp, sp_t = spells.spell(quiet, t, f0, fs)
+        sh, sh_t = spells.shift(slow, quiet, fs) if ch in spells.SHIFT_CHANNELS else (float("nan"), float("nan"))
         out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top, "wander": _wander(e, fs, f0),
-                   "phase_noise": _phase_noise(e_burst, t, f0, fs)}
+                   "phase_noise": _phase_noise(e_burst, t, f0, fs), "spell": sp, "spell_t": lead + sp_t, "shift": sh, "shift_t": lead + sh_t}
     return out
+
+
+def _timed(per: list[dict[str, Any]], key: str, limit: float) -> dict[str, Any]:
+    """A window test's records over ``limit`` (per channel), the worst record and where in it."""
+    hits = [(a, ch) for a in per for ch in CHANNELS if np.isfinite(a[ch][key]) and a[ch][key] > limit]
+    worst = max(hits, key=lambda h: h[0][h[1]][key], default=None)
+    return {"records": len({id(a) for a, _ in hits}), "channels": sorted({ch for _, ch in hits}),
+            "frequencies_Hz": sorted({a["frequency_Hz"] for a, _ in hits}),
+            "worst": None if worst is None else {"record": worst[0]["record"], "channel": worst[1], "value": worst[0][worst[1]][key],
+                                                 "time_s": worst[0][worst[1]][key + "_t"]},
+            "flagged": len({id(a) for a, _ in hits}) >= MIN_RECORDS}
 
 
 def artefacts(sd: SessionData) -> dict[str, Any]:
@@ -320,13 +342,24 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
         phase[ch] = float(np.median(v)) if len(v) >= MIN_PHASE_RECORDS else float("nan")
     out["phase_noise"] = {"median": phase, "channels": sorted(ch for ch, v in phase.items() if v > PHASE_NOISE),
                           "flagged": any(v > PHASE_NOISE for v in phase.values())}
-    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"])
+    out["spells"] = _timed(per, "spell", spells.SPELL_POWER)
+    out["shifts"] = _timed(per, "shift", spells.SHIFT_Z)
+    out["spell_power"], out["shift_z"] = spells.SPELL_POWER, spells.SHIFT_Z
+    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
+                          or out["spells"]["flagged"] or out["shifts"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "wander": max(wander, default=0.0),
-                  "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0)}
+                  "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0),
+                  "spell": _second(per, "spell"), "shift": _second(per, "shift")}
     return out
+
+
+def _second(per: list[dict[str, Any]], key: str) -> float:
+    """The second largest record's value of a window test (the two-record rule's margin), per channel's worst."""
+    v = sorted((max((a[ch][key] for ch in CHANNELS if np.isfinite(a[ch][key])), default=0.0) for a in per), reverse=True)
+    return float(v[1]) if len(v) > 1 else 0.0
 
 
 def level(a: dict[str, Any]) -> float:
@@ -335,7 +368,7 @@ def level(a: dict[str, Any]) -> float:
     flagged kind)."""
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
-                     m.get("phase_noise", 0.0) / PHASE_NOISE))
+                     m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z))
 
 
 def detail(a: dict[str, Any]) -> str:
@@ -358,4 +391,13 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the {' and '.join(q['channels'])} noise follows the drive's phase (its variance up to "
                      f"{a['max']['phase_noise']:.1f}x from one part of the cycle to another, median over the sine records): a sensor's "
                      f"noise growing with the target's speed or range, a contact chattering while the strip moves")
+    for key, what in (("spells", "the {ch} noise rises {v:.0f}-fold for a while and falls back (a spell: a draught or a jet "
+                                  "buffeting the strip, a vibration or a transmitter switched on and off)"),
+                      ("shifts", "the {ch} level steps by {v:.0f} times its noise and stays (a rectified radio carrier, a "
+                                 "switched amplifier range, a connector making and breaking)")):
+        x = a.get(key, {})
+        if x.get("flagged"):
+            w = x["worst"]
+            parts.append(what.format(ch=" and ".join(x["channels"]), v=w["value"]) + f" in {x['records']} sine records, worst "
+                         f"{w['time_s']:.3g} s into {w['record']}")
     return "; ".join(parts)
