@@ -53,6 +53,9 @@ class Prediction:
     step_i: list[np.ndarray]
     force_rel: np.ndarray  # predicted mean clamp force of each sine record relative to its target, minus 1
     line: dict[tuple[str, float], float]  # predicted line amplitude per (channel, Hz); absent = none (noise only)
+    # the lines scaled in each record by a level of its own, fitted on that record (engine.line_levels): a source
+    # switched on and off or varying between records, its spectrum and couplings fixed
+    line_level: bool = False
 
 
 def baseline(ctx: Context) -> Prediction:
@@ -60,7 +63,7 @@ def baseline(ctx: Context) -> Prediction:
     if ctx.base is not None:
         b = ctx.base
         return Prediction(b.Hd.copy(), b.Hi.copy(), b.hd.copy(), b.hi.copy(), [d.copy() for d in b.step_d],
-                          [i.copy() for i in b.step_i], b.force_rel.copy(), dict(b.line))
+                          [i.copy() for i in b.step_i], b.force_rel.copy(), dict(b.line), b.line_level)
     n = len(ctx.sines)
     return Prediction(ctx.Hd.copy(), ctx.Hi.copy(), np.zeros((n, 2), complex), np.zeros((n, 2), complex),
                       [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], np.zeros(n), {})
@@ -80,6 +83,8 @@ class Extension:
     # a start read off the data it is fitted on (one least-squares start besides x0), for forms of many parameters
     # whose values the data show directly (a line's amplitude)
     start: Callable[[Context], np.ndarray] | None = None
+    # parameters fitted inside the prediction on every record (a pickup's level per record), counted in DeltaBIC
+    inner_dof: Callable[[Context], int] | None = None
 
 
 def _drive(s: SineFeature) -> complex:

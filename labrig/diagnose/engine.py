@@ -20,6 +20,7 @@ from scipy.optimize import least_squares
 
 from labrig.diagnose.artefacts import artefacts, detail as artefact_detail, level as artefact_level
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
+from labrig.diagnose.line_levels import line_arrays, line_levels
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
@@ -148,16 +149,11 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
             prev = out.get(key, (np.zeros(0), np.zeros(0)))
             out[key] = (np.r_[prev[0], r / sig / w], np.r_[prev[1], r / rms / w * 3])
     if ctx.lines:
-        ev, rel = [], []
-        for line in ctx.lines:
-            for key, a in line.amp.items():
-                fl = line.floor[key]
-                if not np.isfinite(fl) or fl <= 0:
-                    continue
-                pred_a = math.hypot(pred.line.get(key, 0.0), 1.25 * fl)  # noise alone reads ~1.25 x the median floor
-                ev.append((pred_a - a) / fl)
-                rel.append((pred_a - a) / line.rms[key[0]] * 10)
-        out["line"] = (np.array(ev), np.array(rel))
+        la = line_arrays(ctx)
+        amp = np.array([pred.line.get(k, 0.0) for k in la.keys])[la.key] if pred.line else np.zeros(la.a.size)
+        g = line_levels(amp, la) if pred.line_level else 1.0
+        pred_a = np.hypot(g * amp, 1.25 * la.fl)  # noise alone reads ~1.25 x the median floor
+        out["line"] = ((pred_a - la.a) / la.fl, (pred_a - la.a) / la.rms * 10)
     if ctx.spectra:
         ev, rel = [], []
         for spec, zb in ctx.spectra:
@@ -374,7 +370,7 @@ class _Scorer:
             held = blocks(ext.apply(th, self.ctx_held), self.ctx_held)
             h = nrmse(held, self.where, self.accuracy)
             ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-            dbic = c - self.c0 + len(th) * math.log(max(self.n, 2))
+            dbic = c - self.c0 + (len(th) + (ext.inner_dof(self.ctx_fit) if ext.inner_dof else 0)) * math.log(max(self.n, 2))
             return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio, held=held, ext=ext)
         r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext), self.valley)
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]

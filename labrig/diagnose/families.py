@@ -15,6 +15,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
+| mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
 The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``.
 """
@@ -400,11 +401,24 @@ def _mains_start(ctx: Context) -> np.ndarray:
     return np.array(out) / _MAINS_SCALE
 
 
+def _mains_varying(th, ctx: Context):
+    """The lines of ``_mains_harmonics`` scaled in each record by a level of its own (``engine.line_level``): a load
+    switched on and off (a thermostat's heater, a compressor, a burst-fire controller) or a coupling that changes
+    (someone's hand near the leads), its spectrum and its couplings into the channels fixed."""
+    p = _mains_harmonics(th, ctx)
+    p.line_level = True
+    return p
+
+
+_MAINS_PARAMS = tuple(f"{LINE_CHANNELS[ch][1]}{f:g}_{LINE_CHANNELS[ch][2]}" for ch, f in _MAINS_KEYS)
 FAMILIES["mains_pickup"] += [
-    _form("mains_pickup", "harmonics", tuple(f"{LINE_CHANNELS[ch][1]}{f:g}_{LINE_CHANNELS[ch][2]}" for ch, f in _MAINS_KEYS),
-          (0.0,) * len(_MAINS_KEYS), (0.0,) * len(_MAINS_KEYS), (1e4,) * len(_MAINS_KEYS), _mains_harmonics,
-          "a constant line at each mains frequency and its harmonics to the 7th (50/60 Hz grids), per channel (the sensors and "
-          "the drive's monitor): a chopped or saturating load's pickup", start=_mains_start),
+    _form("mains_pickup", "harmonics", _MAINS_PARAMS, (0.0,) * len(_MAINS_KEYS), (0.0,) * len(_MAINS_KEYS), (1e4,) * len(_MAINS_KEYS),
+          _mains_harmonics, "a constant line at each mains frequency and its harmonics to the 7th (50/60 Hz grids), per channel "
+          "(the sensors and the drive's monitor): a chopped or saturating load's pickup", start=_mains_start),
+    _form("mains_pickup", "varying", _MAINS_PARAMS, (0.0,) * len(_MAINS_KEYS), (0.0,) * len(_MAINS_KEYS), (1e4,) * len(_MAINS_KEYS),
+          _mains_varying, "the lines of 'harmonics' at a level of each record's own: a load switched on and off or a coupling "
+          "that changes between records, its spectrum fixed (a level per record, counted in DeltaBIC)", start=_mains_start,
+          inner_dof=lambda ctx: len(ctx.lines)),
 ]
 FAMILIES["time_delay"] += [
     _form("time_delay", "lag", ("tau_s",), (0.005,), (0.0,), (0.1,), _lag, "first-order lag 1/(1 + s tau) on the displacement",
