@@ -42,3 +42,18 @@ def test_the_level_is_relative_to_the_spectrum_fitted():
     g1 = line_levels(spectrum[la.key], la)
     g2 = line_levels(2 * spectrum[la.key], la)
     assert np.allclose(g1, 2 * g2, rtol=0.05), (g1, g2)
+
+
+def test_a_drive_harmonic_folds_where_the_records_rate_puts_it():
+    """Where a drive harmonic appears in a record: below Nyquist where it is, above it folded back (a record taken at
+    a third of labrig's rate, 333.3 Hz, keeps a 20 Hz drive's 8th harmonic, 160 Hz, where it is and puts its 12th,
+    240 Hz, at 93.3 Hz; at 200 Hz a 16.67 Hz drive's 9th, 150 Hz, reads at 50 Hz, on the mains' line, where the line
+    features no longer read pickup)."""
+    from labrig.diagnose.features import _folded
+
+    assert np.allclose(_folded(np.array([30.0, 130.0, 170.0, 260.0, 50.0]), 100.0), [30.0, 30.0, 30.0, 40.0, 50.0])
+    fs = 1000.0 / 3
+    g = _folded(20.0 * np.arange(1, 21), fs)
+    assert np.all((g >= 0) & (g <= fs / 2 + 1e-9))
+    assert np.isclose(g[7], 160.0) and np.isclose(g[11], fs - 240.0)
+    assert np.isclose(_folded(np.array([9 * 50 / 3]), 200.0)[0], 50.0)

@@ -25,7 +25,7 @@ STEP_RATE_HZ = 50.0  # step records are compared at this rate (the dynamics of i
 LINE_HZ = tuple(sorted({base * n for base in MAINS_HZ for n in range(1, MAINS_ORDERS + 1)}))
 # the channels a line is read on: (what it is, parameter prefix, parameter unit, SI per unit)
 LINE_CHANNELS = {"d": ("displacement", "disp", "um", 1e-6), "i": ("current", "cur", "uA", 1e-6), "v": ("drive monitor", "volt", "mV", 1e-3)}
-DRIVE_ORDERS = 20  # a drive harmonic within 2 Hz of a line hides it (it would read as pickup)
+DRIVE_ORDERS = 20  # a drive harmonic within 2 Hz of a line, where it folds at the record's rate, hides it (it would read as pickup)
 
 
 @dataclass
@@ -170,6 +170,14 @@ def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
     return float(coef[0]), float(np.mean(f)), sigma_w * math.sqrt(12.0 / f.size) / dur
 
 
+def _folded(f: np.ndarray, fs: float) -> np.ndarray:
+    """Where frequencies ``f`` appear in a record sampled at ``fs`` (folded into [0, fs/2]): a drive harmonic above
+    Nyquist (a record decimated or taken slower than labrig's own, whose rate keeps the first 20 below it) lands
+    there, and on a mains line it would read as pickup."""
+    g = np.mod(f, fs)
+    return np.minimum(g, fs - g)
+
+
 def _lines(t: np.ndarray, x: np.ndarray, fs: float, freqs) -> dict[float, tuple[float, float]]:
     """Per line frequency: (amplitude there, median amplitude of the neighbouring bins), from one amplitude-calibrated
     Hann spectrum of the record; (0, inf) for a line the record cannot resolve (within 1.1x of Nyquist)."""
@@ -247,7 +255,7 @@ def extract(sd: SessionData) -> Features:
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
         amp, floor = {}, {}
         f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
-        freqs = [f for f in LINE_HZ if not (f_drive and any(abs(k * f_drive - f) < 2.0 for k in range(1, DRIVE_ORDERS + 1)))]
+        freqs = [f for f in LINE_HZ if not (f_drive and np.any(np.abs(_folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0))]
         # the drive's monitor too: a line the strip never saw, picked up on the recorded voltage, is mains pickup
         # as surely as one on the sensors (and a model driven by that record would predict it in the current)
         chans = tuple(zip(LINE_CHANNELS, (r.d, r.i, r.v)))
