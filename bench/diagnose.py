@@ -37,8 +37,10 @@
 * Fresh9 held-out set (``--set fresh9``, bench/inject_fresh9.py ``fresh9_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 97-99, made on
   the simulated bench after its block fix (every earlier set's bases carry the old bench's block glitches).
+* Fresh10 held-out set (``--set fresh10``, bench/inject_fresh10.py ``fresh10_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 100-102.
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -122,7 +124,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh6": "fresh6 held-out set (diagnosed once unseen at c966cb0; seen since)",
           "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
           "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)",
-          "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)"}
+          "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)",
+          "fresh10": "fresh10 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
