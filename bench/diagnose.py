@@ -125,7 +125,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh7": "fresh7 held-out set (diagnosed once unseen at 8ef49e3; seen since)",
           "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)",
           "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)",
-          "fresh10": "fresh10 held-out set (unseen)"}
+          "fresh10": "fresh10 held-out set (diagnosed once unseen at 7041ed2; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
