@@ -4,6 +4,7 @@ and off, scaled in each record by the level that best reads it, as ``engine.bloc
 import numpy as np
 
 from labrig.diagnose.line_levels import LineArrays, line_levels
+from labrig.estimate import folded
 
 
 def lines(levels, spectrum, floor, rng):
@@ -15,7 +16,7 @@ def lines(levels, spectrum, floor, rng):
             z = g * s + fl * (rng.standard_normal() + 1j * rng.standard_normal()) / np.sqrt(2)
             rows.append((r, j, abs(z), fl))
     col = lambda k, dt=float: np.array([row[k] for row in rows], dtype=dt)  # noqa: E731
-    return LineArrays(list(range(len(spectrum))), col(1, int), col(0, int), col(2), col(3), np.ones(len(rows)), len(levels))
+    return LineArrays(list(range(len(spectrum))), col(1, int), col(0, int), col(2), col(3), np.ones(len(rows)))
 
 
 def test_each_records_level_is_read_and_an_idle_record_reads_near_zero():
@@ -49,11 +50,9 @@ def test_a_drive_harmonic_folds_where_the_records_rate_puts_it():
     a third of labrig's rate, 333.3 Hz, keeps a 20 Hz drive's 8th harmonic, 160 Hz, where it is and puts its 12th,
     240 Hz, at 93.3 Hz; at 200 Hz a 16.67 Hz drive's 9th, 150 Hz, reads at 50 Hz, on the mains' line, where the line
     features no longer read pickup)."""
-    from labrig.diagnose.features import _folded
-
-    assert np.allclose(_folded(np.array([30.0, 130.0, 170.0, 260.0, 50.0]), 100.0), [30.0, 30.0, 30.0, 40.0, 50.0])
+    assert np.allclose(folded(np.array([30.0, 130.0, 170.0, 260.0, 50.0]), 100.0), [30.0, 30.0, 30.0, 40.0, 50.0])
     fs = 1000.0 / 3
-    g = _folded(20.0 * np.arange(1, 21), fs)
+    g = folded(20.0 * np.arange(1, 21), fs)
     assert np.all((g >= 0) & (g <= fs / 2 + 1e-9))
     assert np.isclose(g[7], 160.0) and np.isclose(g[11], fs - 240.0)
-    assert np.isclose(_folded(np.array([9 * 50 / 3]), 200.0)[0], 50.0)
+    assert np.isclose(folded(np.array([9 * 50 / 3]), 200.0)[0], 50.0)

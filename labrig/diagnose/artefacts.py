@@ -53,7 +53,8 @@ import numpy as np
 from scipy.ndimage import median_filter
 
 from labrig.diagnose import spells
-from labrig.estimate import MAINS_HZ
+from labrig.diagnose.spells import robust_sigma
+from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
 from labrig.records import SINE_KINDS
 
@@ -80,12 +81,6 @@ PHASE_SAMPLES = 100  # samples each phase bin needs
 PHASE_NOISE = 4.0  # the records' median of (largest / smallest noise variance over the phase bins)
 MIN_PHASE_RECORDS = 4  # records the median needs
 CHANNELS = ("displacement", "current")
-
-
-def _alias(f: np.ndarray, fs: float) -> np.ndarray:
-    """Where frequencies ``f`` appear in a record sampled at ``fs``: folded into [0, fs/2]."""
-    g = np.mod(f, fs)
-    return np.minimum(g, fs - g)
 
 
 def _segment(r: TimeRecord) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float] | None:
@@ -142,14 +137,10 @@ def _running_median(e: np.ndarray, fs: float, f0: float, periodic_removed: bool)
     return median_filter(e, size=w, mode="nearest") if w >= 9 else np.zeros_like(e)
 
 
-def _robust_sigma(e: np.ndarray) -> float:
-    return float(1.4826 * np.median(np.abs(e - np.median(e))))
-
-
 def _bursts(e: np.ndarray, quantum: float) -> tuple[int, int, float]:
     """(runs, longest, worst z) of ``BURST_RUN`` or more consecutive samples beyond ``BURST_Z`` robust sigmas; the
     worst z is the largest level that ``BURST_RUN`` samples in a row all exceed (the margin a clean record leaves)."""
-    sigma = max(_robust_sigma(e), quantum / math.sqrt(12.0), 1e-300)
+    sigma = max(robust_sigma(e), quantum / math.sqrt(12.0), 1e-300)
     z = np.abs(e - np.median(e)) / sigma
     hot = np.concatenate([[False], z > BURST_Z, [False]]).astype(np.int8)
     edges = np.flatnonzero(np.diff(hot))
@@ -204,11 +195,11 @@ def _guarded(f: np.ndarray, fs: float, f0: float, orders: int, sidebands: int = 
     df = f[1] - f[0]
     ok = np.ones(f.size, bool)
     ok[:LOW_BINS] = False
-    for g in _alias(f0 * np.arange(1, orders + 1), fs):
+    for g in folded(f0 * np.arange(1, orders + 1), fs):
         ok[np.abs(f - g) <= GUARD_BINS * df] = False
     for base in MAINS_HZ:
         lines = base * np.arange(1, int(fs / base) + 2)
-        for g in _alias((lines[:, None] + f0 * np.arange(-sidebands, sidebands + 1)).ravel(), fs):
+        for g in folded((lines[:, None] + f0 * np.arange(-sidebands, sidebands + 1)).ravel(), fs):
             ok[np.abs(f - g) <= max(MAINS_GUARD_HZ, GUARD_BINS * df)] = False
     return ok
 
@@ -270,7 +261,7 @@ def _phase_noise(e: np.ndarray, t: np.ndarray, f0: float, fs: float) -> float:
     b = np.minimum((np.mod(t * f0, 1.0) * PHASE_BINS).astype(int), PHASE_BINS - 1)
     if np.bincount(b, minlength=PHASE_BINS).min() < PHASE_SAMPLES:
         return float("nan")
-    v = np.array([_robust_sigma(e[b == j]) ** 2 for j in range(PHASE_BINS)])
+    v = np.array([robust_sigma(e[b == j]) ** 2 for j in range(PHASE_BINS)])
     return float(v.max() / max(v.min(), 1e-300))
 
 
@@ -305,11 +296,12 @@ def _timed(per: list[dict[str, Any]], key: str, limit: float) -> dict[str, Any]:
     """A window test's records over ``limit`` (per channel), the worst record and where in it."""
     hits = [(a, ch) for a in per for ch in CHANNELS if np.isfinite(a[ch][key]) and a[ch][key] > limit]
     worst = max(hits, key=lambda h: h[0][h[1]][key], default=None)
-    return {"records": len({id(a) for a, _ in hits}), "channels": sorted({ch for _, ch in hits}),
+    records = len({id(a) for a, _ in hits})
+    return {"records": records, "channels": sorted({ch for _, ch in hits}),
             "frequencies_Hz": sorted({a["frequency_Hz"] for a, _ in hits}),
             "worst": None if worst is None else {"record": worst[0]["record"], "channel": worst[1], "value": worst[0][worst[1]][key],
                                                  "time_s": worst[0][worst[1]][key + "_t"]},
-            "flagged": len({id(a) for a, _ in hits}) >= MIN_RECORDS}
+            "flagged": records >= MIN_RECORDS}
 
 
 def artefacts(sd: SessionData) -> dict[str, Any]:

@@ -53,7 +53,7 @@ class Prediction:
     step_i: list[np.ndarray]
     force_rel: np.ndarray  # predicted mean clamp force of each sine record relative to its target, minus 1
     line: dict[tuple[str, float], float]  # predicted line amplitude per (channel, Hz); absent = none (noise only)
-    # the lines scaled in each record by a level of its own, fitted on that record (engine.line_levels): a source
+    # the lines scaled in each record by a level of its own, fitted on that record (line_levels.py): a source
     # switched on and off or varying between records, its spectrum and couplings fixed
     line_level: bool = False
 

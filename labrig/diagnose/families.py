@@ -402,7 +402,7 @@ def _mains_start(ctx: Context) -> np.ndarray:
 
 
 def _mains_varying(th, ctx: Context):
-    """The lines of ``_mains_harmonics`` scaled in each record by a level of its own (``engine.line_level``): a load
+    """The lines of ``_mains_harmonics`` scaled in each record by a level of its own (``line_levels.line_levels``): a load
     switched on and off (a thermostat's heater, a compressor, a burst-fire controller) or a coupling that changes
     (someone's hand near the leads), its spectrum and its couplings into the channels fixed."""
     p = _mains_harmonics(th, ctx)

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from labrig.estimate import MAINS_HZ, MAINS_ORDERS, SineEstimate, sine_estimate
+from labrig.estimate import MAINS_HZ, MAINS_ORDERS, SineEstimate, folded, sine_estimate
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_cycles, step_onset
 from labrig.physics import timeresp, transfer
 from labrig.physics.params import Specimen
@@ -170,14 +170,6 @@ def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
     return float(coef[0]), float(np.mean(f)), sigma_w * math.sqrt(12.0 / f.size) / dur
 
 
-def _folded(f: np.ndarray, fs: float) -> np.ndarray:
-    """Where frequencies ``f`` appear in a record sampled at ``fs`` (folded into [0, fs/2]): a drive harmonic above
-    Nyquist (a record decimated or taken slower than labrig's own, whose rate keeps the first 20 below it) lands
-    there, and on a mains line it would read as pickup."""
-    g = np.mod(f, fs)
-    return np.minimum(g, fs - g)
-
-
 def _lines(t: np.ndarray, x: np.ndarray, fs: float, freqs) -> dict[float, tuple[float, float]]:
     """Per line frequency: (amplitude there, median amplitude of the neighbouring bins), from one amplitude-calibrated
     Hann spectrum of the record; (0, inf) for a line the record cannot resolve (within 1.1x of Nyquist)."""
@@ -255,7 +247,7 @@ def extract(sd: SessionData) -> Features:
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
         amp, floor = {}, {}
         f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
-        freqs = [f for f in LINE_HZ if not (f_drive and np.any(np.abs(_folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0))]
+        freqs = [f for f in LINE_HZ if not (f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0))]
         # the drive's monitor too: a line the strip never saw, picked up on the recorded voltage, is mains pickup
         # as surely as one on the sensors (and a model driven by that record would predict it in the current)
         chans = tuple(zip(LINE_CHANNELS, (r.d, r.i, r.v)))

@@ -29,7 +29,6 @@ class LineArrays:
     a: np.ndarray
     fl: np.ndarray
     rms: np.ndarray
-    records: int
 
 
 _LINE_ARRAYS: dict[int, tuple[list, LineArrays]] = {}  # by the lines' list: contexts copied or refitted share it
@@ -47,7 +46,7 @@ def line_arrays(ctx: Context) -> LineArrays:
     keys = sorted({row[1] for row in rows})
     index = {k: j for j, k in enumerate(keys)}
     col = (lambda j, dt=float: np.array([row[j] for row in rows], dtype=dt))
-    out = LineArrays(keys, np.array([index[row[1]] for row in rows], dtype=int), col(0, int), col(2), col(3), col(4), len(ctx.lines))
+    out = LineArrays(keys, np.array([index[row[1]] for row in rows], dtype=int), col(0, int), col(2), col(3), col(4))
     if len(_LINE_ARRAYS) >= _LINE_ARRAYS_KEPT:
         _LINE_ARRAYS.pop(next(iter(_LINE_ARRAYS)))
     _LINE_ARRAYS[id(ctx.lines)] = (ctx.lines, out)

@@ -41,7 +41,8 @@ MIN_SAMPLES = 16  # a window's samples at the least
 MIN_WINDOWS = 4
 
 
-def _robust_sigma(e: np.ndarray) -> float:
+def robust_sigma(e: np.ndarray) -> float:
+    """1.4826 x the median absolute deviation: a normal law's sigma, blind to a few outliers."""
     return float(1.4826 * np.median(np.abs(e - np.median(e))))
 
 
@@ -58,7 +59,7 @@ def spell(quiet: np.ndarray, t: np.ndarray, f0: float, fs: float) -> tuple[float
     record too short for ``MIN_WINDOWS`` windows."""
     b = np.minimum((np.mod(t * f0, 1.0) * PHASE_BINS).astype(int), PHASE_BINS - 1)
     if np.bincount(b, minlength=PHASE_BINS).min() >= PHASE_MIN:
-        level = np.array([_robust_sigma(quiet[b == j]) for j in range(PHASE_BINS)])
+        level = np.array([robust_sigma(quiet[b == j]) for j in range(PHASE_BINS)])
         quiet = quiet / np.maximum(level[b], 1e-300)
     win = _windows(quiet, fs, SPELL_WINDOW_S)
     if win is None:
@@ -82,7 +83,7 @@ def shift(slow: np.ndarray, quiet: np.ndarray, fs: float) -> tuple[float, float]
     if win is None or q is None or win.shape[0] < 4 * k:
         return float("nan"), float("nan")
     m, qm = win.mean(axis=1), q.mean(axis=1)
-    sigma = max(_robust_sigma(np.diff(qm)) / math.sqrt(2), _robust_sigma(quiet) / math.sqrt(win.shape[1]), 1e-300)
+    sigma = max(robust_sigma(np.diff(qm)) / math.sqrt(2), robust_sigma(quiet) / math.sqrt(win.shape[1]), 1e-300)
     c = np.concatenate([[0.0], np.cumsum(m)])
     edges = np.arange(2 * k, m.size - 2 * k + 1)
 

@@ -125,6 +125,14 @@ MAINS_HZ = (50.0, 60.0)
 MAINS_ORDERS = 7  # the mains' harmonics read: a triac's or rectifier's chopped current is rich in them, a transformer's saturation too
 
 
+def folded(f: np.ndarray, fs: float) -> np.ndarray:
+    """Where frequencies ``f`` appear in a record sampled at ``fs``, folded into [0, fs/2]: a line or a drive harmonic
+    above Nyquist lands there (a card without an anti-alias filter, a record decimated or taken slower than labrig's
+    own, whose rate keeps the drive's first 20 harmonics below it)."""
+    g = np.mod(f, fs)
+    return np.minimum(g, fs - g)
+
+
 def _mains_columns(t: np.ndarray, f: float, harmonics: int) -> np.ndarray:
     """cos and sin at the mains' lines, their harmonics to ``MAINS_ORDERS`` (and any more below Nyquist) folded into
     the band as a card without an anti-alias filter sees them, less those within a resolution (1 / record) of the
@@ -137,7 +145,7 @@ def _mains_columns(t: np.ndarray, f: float, harmonics: int) -> np.ndarray:
     lines: list[float] = []
     for base in MAINS_HZ:
         for m in range(1, max(MAINS_ORDERS, int(fs / 2 / base)) + 1):
-            g = abs(m * base - fs * round(m * base / fs))
+            g = float(folded(np.float64(m * base), fs))
             if 0 < g < fs / 2 - 1.0 / span and min(abs(g - k * f) for k in range(harmonics + 1)) > 1.0 / span \
                     and all(abs(g - h) > 1.0 / span for h in lines):
                 lines.append(g)
