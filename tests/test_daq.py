@@ -71,7 +71,7 @@ def test_wrong_calibration_scales_linearly(sim: SimDaq) -> None:
 
 def test_continuous_blocks_are_contiguous(rig: Daq, sim: SimDaq) -> None:
     fs, period = 100.0, 50
-    block = _sine(period, fs, f=fs / period)
+    block = _sine(period, fs, f=fs / period) + 0.1  # no sample at exactly 0 V: the live check below reads one
     rig.start_continuous(fs, drive_block=block, buffer_s=BUFFER_S)
     blocks = [rig.read_block(200) for _ in range(6)]
     assert sim.ao_output_V() != 0.0 or np.allclose(block, 0)

@@ -125,16 +125,19 @@ def long_sines(sd, seconds: float = 8.0):
 
 
 def noise(y: np.ndarray) -> float:
-    """A reading's white noise from its successive differences (robust): the signal's own change per sample is far
-    smaller at these drives' frequencies."""
+    """A scale for the forms written here: the reading's robust sample-to-sample change / sqrt 2 (on the slow sine
+    records the signal's own change per sample is several times the sensor's noise, so the forms come out strong)."""
     d = np.diff(y)
     return float(1.4826 * np.median(np.abs(d - np.median(d))) / np.sqrt(2))
 
 
 def test_a_spell_of_buffeting_is_found_and_a_steady_raised_noise_is_not(clean):
     """A fume hood's draught buffets the strip for a few seconds: noise band-limited to 3-12 Hz, four times the
-    laser's own RMS, in the middle third of two long sine records. A spell, in the displacement; the same noise over
-    the whole of every record is a steadier laser, not a spell; in one record only it is a knock, not a pattern."""
+    reading's scale (``noise``), from 60 to 80 % of two long sine records. A spell, in the displacement; the same noise
+    over the whole of every record is a steadier laser, not a spell; in one record only it is a knock, not a pattern.
+    (A spell must leave most of the cycles read quiet: the statistic's scale is the median window's. An earlier
+    version put it in the middle third of the record, which is up to two thirds of the cycles read after the
+    settling ones, and passed or failed with the bench's noise.)"""
     from scipy import signal
 
     rng = np.random.default_rng(11)
@@ -148,17 +151,17 @@ def test_a_spell_of_buffeting_is_found_and_a_steady_raised_noise_is_not(clean):
 
     spell, steady, once = copy.deepcopy(clean), copy.deepcopy(clean), copy.deepcopy(clean)
     for r in long_sines(spell)[2:4]:
-        buffet(r, 1 / 3, 2 / 3)
+        buffet(r, 0.6, 0.8)
     for r in sines(steady):
         if float(np.ptp(r.t)) >= 2.0:
             buffet(r, 0.0, 1.01)
-    buffet(long_sines(once)[2], 1 / 3, 2 / 3)
+    buffet(long_sines(once)[2], 0.6, 0.8)
     a = art.artefacts(spell)
     assert a["spells"]["flagged"] and a["spells"]["records"] == 2 and a["spells"]["channels"] == ["displacement"], a["spells"]
     assert not a["shifts"]["flagged"]  # (a strong spell may also carry bursts: its peaks, correlated, pass 6 sigma)
     w = a["spells"]["worst"]
     span = float(np.ptp(long_sines(spell)[2].t))
-    assert span / 3 - 1 < w["time_s"] < 2 * span / 3 + 1, w  # located in the spell
+    assert 0.6 * span - 1 < w["time_s"] < 0.8 * span + 1, w  # located in the spell
     assert "rises" in art.detail(a)
     assert not art.artefacts(steady)["spells"]["flagged"]
     assert not art.artefacts(once)["flagged"]

@@ -9,7 +9,8 @@ frequency and a slow drift of it):
   periodic part, its slow part and the mains' lines off) is divided by its own robust level in each of ``PHASE_BINS``
   bins of the drive's phase, so a noise that follows the drive (a laser's speckle, read by the phase test) is not a
   spell, then cut into windows of ``SPELL_WINDOW_S``. The statistic is the second largest window's mean square over
-  the median window's: a spell must fill two windows, so a burst of a few samples (the burst test's) is not one.
+  the median window's: a spell must fill two windows, so a burst of a few samples (the burst test's) is not one,
+  and leave most of the record's windows quiet (one over more than half of the cycles read is the record's level).
 * **shifts**: the current's level steps and stays: a rectified radio carrier in an amplifier's input stage, an
   autoranging or relay-switched amplifier, a connector making and breaking. At each edge between windows of
   ``SHIFT_WINDOW_S``, the change of the level across it less the changes beside it (so a drift, straight or gently
