@@ -46,7 +46,6 @@ docs/diagnosis.md ("Recording artefacts"). Only the sine records are read: their
 from __future__ import annotations
 
 import math
-import warnings
 from typing import Any
 
 import numpy as np
@@ -121,11 +120,21 @@ def _periodic_median(e: np.ndarray, t: np.ndarray, f0: float) -> np.ndarray:
         return np.zeros_like(e)
     nb = int(min(256, per_cycle // 2))
     b = np.minimum((np.mod(t * f0, 1.0) * nb).astype(int), nb - 1)
-    med = np.zeros(nb)
-    for j in range(nb):
-        v = e[b == j]
-        med[j] = np.median(v) if v.size else 0.0
-    return med[b]
+    return group_medians(e, b, nb)[b]
+
+
+def group_medians(x: np.ndarray, group: np.ndarray, n: int) -> np.ndarray:
+    """The median of ``x`` in each of groups 0..n-1 (``np.median``'s, the mean of the two middle values of an even
+    count; 0 for an empty group), from one sort instead of a pass per group."""
+    order = np.lexsort((x, group))
+    xs = x[order]
+    count = np.bincount(group, minlength=n)
+    start = np.cumsum(count) - count
+    lo, hi = start + (count - 1) // 2, start + count // 2
+    ok = count > 0
+    out = np.zeros(n)
+    out[ok] = 0.5 * (xs[lo[ok]] + xs[hi[ok]])
+    return out
 
 
 def _running_median(e: np.ndarray, fs: float, f0: float, periodic_removed: bool) -> np.ndarray:
@@ -162,12 +171,15 @@ def _neighbour_mean(p: np.ndarray) -> np.ndarray:
     bins on each side / ln 2 (the mean of an exponential law), the larger side's, so that a spectrum falling
     steeply (a slow residual's leakage) does not make its upper edge a line."""
     pad = np.pad(p, (NEIGHBOURS + LOBE, NEIGHBOURS + LOBE), constant_values=np.nan)  # no neighbours past either end
-    win = np.lib.stride_tricks.sliding_window_view(pad, NEIGHBOURS)
+    # each window sorted once (nan last): the median of its finite values, as np.nanmedian's, far faster
+    win = np.sort(np.lib.stride_tricks.sliding_window_view(pad, NEIGHBOURS), axis=1)
+    k = NEIGHBOURS - np.isnan(win).sum(axis=1)
+    rows = np.arange(win.shape[0])
+    with np.errstate(invalid="ignore"):
+        med = np.where(k > 0, 0.5 * (win[rows, np.maximum(k - 1, 0) // 2] + win[rows, np.maximum(k, 0) // 2]), np.nan)
     n = p.size
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)  # a side with no bins at all (the spectrum's ends)
-        left = np.nanmedian(win[:n], axis=1)  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
-        right = np.nanmedian(win[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n], axis=1)  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
+    left = med[:n]  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
+    right = med[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n]  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
     return np.fmax(left, right) / math.log(2.0)  # one side where the other has none (a line at Nyquist)
 
 
