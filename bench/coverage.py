@@ -8,7 +8,13 @@ drawn from the seed), writes the session file, fits it and diagnoses it, exactly
 
 from __future__ import annotations
 
+import contextlib
+import dataclasses
+import fcntl
 import multiprocessing
+import os
+import pickle
+import shutil
 import time
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
@@ -103,11 +109,18 @@ class CaseCache:
     """Cases run once and shared (the test suite's paper sweeps). ``get`` runs what is missing together with every
     case announced in ``expected`` (case -> diagnosed, or fitted only), in one pool, so the workers stay busy
     instead of one sweep at a time. A case asked for diagnosed after it was fitted only is diagnosed then (its
-    session file is reused). A case that raised is remembered: asking for it raises again, at once."""
+    session file is reused). A case that raised is remembered: asking for it raises again, at once.
+
+    Caches on one ``folder`` share their cases across processes (the suite's two pytest-xdist workers): ``get``
+    holds the folder's lock while it reads what the others made, runs what is still missing and writes it back,
+    so a worker that asks while another runs the sweeps waits for them instead of running them again."""
 
     def __init__(self, folder: str | Path, expected: dict[tuple[str, int], bool] | None = None, protocol: str = "paper-sweep", jobs: int = 2,
-                 time_scale: float | None = None):
+                 time_scale: float | None = None, copies: str | Path | None = None):
         self.folder, self.protocol, self.jobs, self.time_scale = Path(folder), protocol, jobs, time_scale
+        # where this process reads the session files from: a copy of its own (HDF5 locks a file another process
+        # writes a fit into), or the folder itself
+        self.copies = Path(copies) if copies is not None else None
         self._expected = dict(expected or {})
         self._done: dict[tuple[str, int], CaseResult] = {}
         self._failed: dict[tuple[str, int], BaseException] = {}
@@ -115,26 +128,72 @@ class CaseCache:
     def _lacks(self, case: tuple[str, int], diagnosed: bool) -> bool:
         return case not in self._done or (diagnosed and not self._done[case].verdict)
 
+    @contextlib.contextmanager
+    def _shared(self):
+        """The folder's lock held, the cases other processes made read in, and this one's written back after."""
+        self.folder.mkdir(parents=True, exist_ok=True)
+        store = self.folder / "cases.pickle"
+        with open(self.folder / "cases.lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            if store.exists():
+                done, failed = pickle.loads(store.read_bytes())
+                for c, r in done.items():
+                    mine = self._done.get(c)
+                    if mine is None or (r.verdict and not mine.verdict):  # new here, or diagnosed since this one fitted it
+                        self._done[c] = r
+                for c, exc in failed.items():
+                    self._failed.setdefault(c, exc)
+            yield
+            try:
+                blob = pickle.dumps((self._done, self._failed))
+            except Exception:  # noqa: BLE001 - an exception that does not pickle travels as its text
+                blob = pickle.dumps((self._done, {c: RuntimeError(repr(e)) for c, e in self._failed.items()}))
+            tmp = store.with_suffix(".tmp")
+            tmp.write_bytes(blob)
+            os.replace(tmp, store)
+
     def get(self, cases: list[tuple[str, int]], diagnosed: bool = True) -> list[CaseResult]:
         cases = list(cases)
         if any(self._lacks(c, diagnosed) for c in cases):
-            want = dict(self._expected)
-            for c in cases:
-                want[c] = want.get(c, False) or diagnosed
-            missing = [c for c, d in want.items() if self._lacks(c, d)]
-            missing = [c for c in missing if c not in self._failed]
+            with self._shared():
+                want = dict(self._expected)
+                for c in cases:
+                    want[c] = want.get(c, False) or diagnosed
+                self._run(want)
+        for c in cases:
+            if c in self._failed:
+                raise RuntimeError(f"bench case {c[0]} seed {c[1]} failed: {self._failed[c]!r}") from self._failed[c]
+        return [self._local(self._done[c]) for c in cases]
+
+    def _local(self, r: CaseResult) -> CaseResult:
+        """``r`` with its session file in ``copies`` (copied there the first time)."""
+        if self.copies is None or not r.path:
+            return r
+        local = self.copies / Path(r.path).name
+        if not local.exists():
+            self.copies.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(r.path, local.with_suffix(".part"))
+            os.replace(local.with_suffix(".part"), local)
+        return dataclasses.replace(r, path=str(local))
+
+    def prefetch(self) -> None:
+        """Run every expected case now (the suite calls it in a thread at its start, so that the sweeps run beside
+        the tests that do not need them); ``get`` then waits for it on the folder's lock."""
+        with self._shared():
+            self._run(dict(self._expected))
+
+    def _run(self, want: dict[tuple[str, int], bool]) -> None:
+        """The cases of ``want`` (case -> diagnosed) not made yet (nor failed), in one pool."""
+        missing = [c for c, d in want.items() if self._lacks(c, d) and c not in self._failed]
+        if missing:
             with spawn_pool(self.jobs) as pool:
                 futures = {c: pool.submit(run_case, (*c, str(self.folder), self.protocol, want[c], self.time_scale)) for c in missing}
                 for c, fut in futures.items():
                     # one case's fault fails the tests that read it, not the others, and is not run again
                     try:
                         self._done[c] = fut.result()
-                    except Exception as exc:  # noqa: BLE001 - re-raised below, for the tests that ask for it
+                    except Exception as exc:  # noqa: BLE001 - re-raised by get, for the tests that ask for it
                         self._failed[c] = exc
-        for c in cases:
-            if c in self._failed:
-                raise RuntimeError(f"bench case {c[0]} seed {c[1]} failed: {self._failed[c]!r}") from self._failed[c]
-        return [self._done[c] for c in cases]
 
 
 def confusion(results: list[CaseResult], names: list[str]) -> str:

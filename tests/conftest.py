@@ -2,6 +2,7 @@
 
 import os
 import sys
+import threading
 from pathlib import Path
 
 import pytest
@@ -13,10 +14,11 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")  # the live window tests n
 
 _status = {"code": 0}
 _bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed (else fitted only)
+_bench_state: dict = {}  # this process's CaseCache of the shared sweeps
 BENCH_TIMEOUT_S = 3600  # the test that first asks for the shared sweeps waits for all of them (~1 min on an idle 2-core machine, far longer at load 10)
 
 
-@pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own, which reads the groups
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     """Collect every selected module's ``BENCH_CASES`` (the simulated paper sweeps it reads, fitted and diagnosed)
     and ``BENCH_FITS`` (fitted only), so the shared sweeps run in one pool; the tests that read them get the long
@@ -26,11 +28,15 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
             _bench_cases[case] = True
         for case in getattr(module, "BENCH_FITS", ()):
             _bench_cases.setdefault(case, False)
-    for item in items:
-        if "bench_sessions" in getattr(item, "fixturenames", ()):
-            item.add_marker(pytest.mark.timeout(BENCH_TIMEOUT_S))
-            # one worker runs the shared sweeps (pytest-xdist, --dist loadgroup): each worker would run its own
-            item.add_marker(pytest.mark.xdist_group("bench_sessions"))
+    bench = [item for item in items if "bench_sessions" in getattr(item, "fixturenames", ())]
+    for item in bench:
+        item.add_marker(pytest.mark.timeout(BENCH_TIMEOUT_S))
+    # the modules that read the sweeps last (pytest-xdist hands out whole modules in this order: --dist loadscope
+    # --no-loadscope-reorder, so that a module's fixtures are made once): the sweeps run meanwhile, beside the
+    # others (_prefetch_bench_sessions)
+    modules = {item.module for item in bench}
+    items[:] = [item for item in items if getattr(item, "module", None) not in modules] + \
+               [item for item in items if getattr(item, "module", None) in modules]
 
 
 @pytest.fixture(scope="session")
@@ -38,11 +44,34 @@ def bench_sessions(tmp_path_factory: pytest.TempPathFactory):
     """Paper sweeps on the simulated bench (scenario, seed), each run, fitted and diagnosed once for the whole test
     session, exactly as ``labrig run paper-sweep --sim --scenario NAME --seed N --fit --diagnose`` does (or only
     fitted, as ``--fit``, for the modules' ``BENCH_FITS``; bench/coverage.py: CaseCache)."""
+    return _bench_cache(tmp_path_factory)
+
+
+def _bench_cache(tmp_path_factory: pytest.TempPathFactory):
+    """This process's cache of the shared sweeps, made once."""
     from bench.coverage import SUITE_TIME_SCALE, CaseCache
 
-    # three workers on two cores: a run spends most of its time waiting on the simulated bench's scaled clock, and a
-    # third worker fills it (a run the overloaded bench faults is rerun)
-    return CaseCache(tmp_path_factory.mktemp("bench_sessions"), expected=_bench_cases, jobs=3, time_scale=SUITE_TIME_SCALE)
+    if "cache" not in _bench_state:
+        # one folder for both pytest-xdist workers (their base temps' parent): the first to ask runs the sweeps, the
+        # other waits for them on the folder's lock (CaseCache). Three processes on two cores: a run spends most of its
+        # time waiting on the simulated bench's scaled clock, and a third fills it (a run the overloaded bench faults is
+        # rerun)
+        root = tmp_path_factory.getbasetemp()
+        folder = (root.parent if os.environ.get("PYTEST_XDIST_WORKER") else root) / "bench_sessions"
+        # each worker reads its own copies: tests store fits into them, and HDF5 locks a file being written
+        _bench_state["cache"] = CaseCache(folder, expected=_bench_cases, jobs=3, time_scale=SUITE_TIME_SCALE,
+                                          copies=root / "bench_sessions_read")
+    return _bench_state["cache"]
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _prefetch_bench_sessions(tmp_path_factory: pytest.TempPathFactory):
+    """Start the shared sweeps at the test session's start, in a thread of each worker (the first to take the
+    folder's lock runs them, the other finds them made), so that they run beside the tests that do not read them
+    (those run first: pytest_collection_modifyitems)."""
+    if _bench_cases:
+        threading.Thread(target=_bench_cache(tmp_path_factory).prefetch, name="bench-prefetch", daemon=True).start()
+    yield
 
 
 def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
