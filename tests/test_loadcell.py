@@ -12,6 +12,7 @@ from drivers import errors
 from drivers.loadcell import LoadCell, parse_frame
 from drivers.transcript import Exchange, ReplaySerial, Transcript
 from labrig.clock import ScaledClock
+from labrig.instruments import STALE_GRACE_WALL_S
 from mock_devices.loadcell_sim import LoadCellSim
 from mock_devices.serial_server import FixedBench, serve
 
@@ -50,7 +51,9 @@ def _fresh(lc: LoadCell, expect_N: float | None = None, wall_s: float = 1.0):
 def rig(request):
     bench = World(4.9)
     sim = LoadCellSim(bench)
-    with serve(sim, request.param) as server, LoadCell(server.address, stale_s=0.15) as lc:
+    # the grace labrig opens it with: a loaded host that stalls the reader thread gets to catch up before a stream
+    # reads as stale (without it a disconnect read as StaleStream when the sweeps ran beside this test)
+    with serve(sim, request.param) as server, LoadCell(server.address, stale_s=0.15, grace_wall_s=STALE_GRACE_WALL_S) as lc:
         yield bench, sim, lc, server
 
 
@@ -137,7 +140,7 @@ def test_each_fault_gives_its_exception(rig, fault, exc):
         while time.monotonic() - t0 < 2.5:  # stale_s plus a frame (room for a loaded machine), never a hang
             lc.force()
             time.sleep(0.005)
-    assert time.monotonic() - t0 < 3.0  # stale_s (0.15 s) plus a frame, with room for a loaded machine
+    assert time.monotonic() - t0 < 3.0  # stale_s (0.15 s) and the grace (1 s), with room for a loaded machine
     if fault != "disconnect":
         sim.clear_fault()
         assert _fresh(lc, 4.9).force_N == pytest.approx(4.9, abs=HALF_COUNT_N)  # recovers
