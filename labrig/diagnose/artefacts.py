@@ -123,18 +123,21 @@ def _periodic_median(e: np.ndarray, t: np.ndarray, f0: float) -> np.ndarray:
     return group_medians(e, b, nb)[b]
 
 
-def group_medians(x: np.ndarray, group: np.ndarray, n: int) -> np.ndarray:
-    """The median of ``x`` in each of groups 0..n-1 (``np.median``'s, the mean of the two middle values of an even
-    count; 0 for an empty group), from one sort instead of a pass per group."""
-    order = np.lexsort((x, group))
-    xs = x[order]
-    count = np.bincount(group, minlength=n)
-    start = np.cumsum(count) - count
-    lo, hi = start + (count - 1) // 2, start + count // 2
+def _run_medians(xs: np.ndarray, start: np.ndarray, count: np.ndarray, empty: float) -> np.ndarray:
+    """The median of each sorted run ``xs[start:start + count]`` (``np.median``'s: the mean of the two middle values
+    of an even count), ``empty`` for a run of none."""
     ok = count > 0
-    out = np.zeros(n)
-    out[ok] = 0.5 * (xs[lo[ok]] + xs[hi[ok]])
+    out = np.full(start.size, empty)
+    lo, hi = start[ok] + (count[ok] - 1) // 2, start[ok] + count[ok] // 2
+    out[ok] = 0.5 * (xs[lo] + xs[hi])
     return out
+
+
+def group_medians(x: np.ndarray, group: np.ndarray, n: int) -> np.ndarray:
+    """The median of ``x`` in each of groups 0..n-1 (0 for an empty group), from one sort instead of a pass per
+    group."""
+    count = np.bincount(group, minlength=n)
+    return _run_medians(x[np.lexsort((x, group))], np.cumsum(count) - count, count, 0.0)
 
 
 def _running_median(e: np.ndarray, fs: float, f0: float, periodic_removed: bool) -> np.ndarray:
@@ -173,10 +176,7 @@ def _neighbour_mean(p: np.ndarray) -> np.ndarray:
     pad = np.pad(p, (NEIGHBOURS + LOBE, NEIGHBOURS + LOBE), constant_values=np.nan)  # no neighbours past either end
     # each window sorted once (nan last): the median of its finite values, as np.nanmedian's, far faster
     win = np.sort(np.lib.stride_tricks.sliding_window_view(pad, NEIGHBOURS), axis=1)
-    k = NEIGHBOURS - np.isnan(win).sum(axis=1)
-    rows = np.arange(win.shape[0])
-    with np.errstate(invalid="ignore"):
-        med = np.where(k > 0, 0.5 * (win[rows, np.maximum(k - 1, 0) // 2] + win[rows, np.maximum(k, 0) // 2]), np.nan)
+    med = _run_medians(win.ravel(), NEIGHBOURS * np.arange(win.shape[0]), NEIGHBOURS - np.isnan(win).sum(axis=1), np.nan)
     n = p.size
     left = med[:n]  # bins k-LOBE-NEIGHBOURS .. k-LOBE-1
     right = med[NEIGHBOURS + 2 * LOBE + 1: NEIGHBOURS + 2 * LOBE + 1 + n]  # k+LOBE+1 .. k+LOBE+NEIGHBOURS
