@@ -25,7 +25,7 @@ import inject_fresh8  # noqa: E402
 import inject_fresh9  # noqa: E402
 import inject_fresh10 as f10  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
-from test_inject_fresh2 import BASE  # noqa: E402
+from test_inject_fresh2 import BASE, run_form, step_records  # noqa: E402
 from test_inject_fresh6 import check_case_list, check_forms_new  # noqa: E402
 
 DISP, CUR, FORCE, Z, V = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
@@ -44,18 +44,6 @@ FAINT = {  # columns that change, but by less than 0.05 % of their RMS on the ti
     "eyring_flow": DISP, "microstep_backdrive": DISP | CUR,
 }
 FORMS = [(t, n, fn) for t, forms in f10.FRESH10_FORMS.items() for n, fn in forms.items()]
-
-
-def _run(fn, seed: int = 7, base: inject.Session = BASE) -> inject.Session:
-    s = copy.deepcopy(base)
-    s.rng = np.random.default_rng(seed)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        fn(s)
-    return s
-
-
-def _step_records(s: inject.Session) -> list[inject.Rec]:
-    return [r for r in s.series() if r.kind == "step"]
 
 
 @pytest.mark.parametrize("truth,name,fn", FORMS, ids=[n for _, n, _ in FORMS])
@@ -80,14 +68,14 @@ def test_part_of_session_forms_leave_the_rest_untouched():
     for bit and changes the later ones; the lamp's warming grows the faradaic wave after it (the room's wave before);
     the current range's hum jumps by its factor."""
     first = min(BASE.pressures())
-    s = _run(f10.dh_nitrogen_purge)
+    s = run_form(f10.dh_nitrogen_purge)
     for a, b in zip(BASE.series(), s.series()):
         for col in ("disp_m", "i_A"):
             assert np.array_equal(a.cols[col], b.cols[col]) == (float(a.entry["pressure_kPa"]) == first)
-    s = _run(f10.far_lamp_arrhenius)
-    plate = [float(np.max(b.cols["i_A"] - a.cols["i_A"])) for a, b in zip(_step_records(BASE), _step_records(s))]
+    s = run_form(f10.far_lamp_arrhenius)
+    plate = [float(np.max(b.cols["i_A"] - a.cols["i_A"])) for a, b in zip(step_records(BASE), step_records(s))]
     assert plate[1] > 1.05 * plate[0] > 0
-    s = _run(f10.mp_range_hum)
+    s = run_form(f10.mp_range_hum)
     rms = {}
     for a, b in zip(BASE.series(), s.series()):
         rms.setdefault(float(a.entry["pressure_kPa"]), []).append(float(np.std(b.cols["i_A"] - a.cols["i_A"])))
@@ -98,17 +86,17 @@ def test_part_of_session_forms_leave_the_rest_untouched():
 def test_pressure_dependent_forms():
     """The hardening root compresses the lowest block's step most; the Eyring pads relax more at the higher pressure;
     the back-driven stepper leaves a block below its threshold untouched and lowers the others in equal steps."""
-    s = _run(f10.ld_root_hardening)
+    s = run_form(f10.ld_root_hardening)
     loss = [float(np.max(np.abs(a.cols["disp_m"] - b.cols["disp_m"])) / np.max(np.abs(a.cols["disp_m"])))
-            for a, b in zip(_step_records(BASE), _step_records(s))]
+            for a, b in zip(step_records(BASE), step_records(s))]
     assert loss[0] > loss[1] > 0
-    s = _run(f10.cr_eyring_flow)
+    s = run_form(f10.cr_eyring_flow)
     kept = {}
     for a, b in zip(BASE.series(), s.series()):
         kept.setdefault(float(a.entry["pressure_kPa"]), []).append(float(b.cols["force_N"][-1] / a.cols["force_N"][-1]))
     lo, hi = sorted(kept)
     assert min(kept[hi]) < min(kept[lo]) <= 1.0
-    s = _run(f10.cr_microstep_backdrive)
+    s = run_form(f10.cr_microstep_backdrive)
     for a, b in zip(BASE.series(), s.series()):
         assert np.all(b.cols["force_N"] <= a.cols["force_N"] + 1e-9)
         if float(a.entry["pressure_kPa"]) == min(BASE.pressures()):
@@ -120,19 +108,19 @@ def test_time_dependent_forms():
     loss of gain shrinks as the coupling is trained; the sliding marker only slides inboard (the later step loses more);
     the creeping base is re-aimed at each block (each block's first samples read as before, its last less)."""
     kept = []
-    s = _run(f10.br_boiled_history)
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    s = run_form(f10.br_boiled_history)
+    for a, b in zip(step_records(BASE), step_records(s)):
         v = a.cols["v_V"]
         off = int(np.argmax(v > 0.5)) + int(np.argmax(v[np.argmax(v > 0.5):] < 0.5)) - 1
         kept.append(b.cols["disp_m"][off] / a.cols["disp_m"][off])
     assert kept[0] < kept[1] < 1
     for fn, grows in ((f10.hy_shakedown, False), (f10.so_sliding_marker, True)):
-        s = _run(fn)
+        s = run_form(fn)
         loss = [float(np.max(np.abs(a.cols["disp_m"] - b.cols["disp_m"])) / np.max(np.abs(a.cols["disp_m"])))
-                for a, b in zip(_step_records(BASE), _step_records(s))]
+                for a, b in zip(step_records(BASE), step_records(s))]
         assert (loss[1] > loss[0] > 0) if grows else (loss[0] > loss[1] > 0), fn.__name__
-    s = _run(f10.so_creeping_base)
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    s = run_form(f10.so_creeping_base)
+    for a, b in zip(step_records(BASE), step_records(s)):
         v = a.cols["v_V"]
         on = int(np.argmax(v > 0.5))
         k = on + int(np.argmax(v[on:] < 0.5)) - 1
@@ -143,8 +131,8 @@ def test_memory_forms():
     """The pH polarisation's current decays along a held step (its back-voltage builds); the stick-slip lead jumps
     (isolated large sample-to-sample changes on a slow record); the dynamic filter follows large moves closely but
     smooths at rest (its noise smaller there); the wall holds the tip until pulled back past its release."""
-    s = _run(f10.far_ph_polarisation)
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    s = run_form(f10.far_ph_polarisation)
+    for a, b in zip(step_records(BASE), step_records(s)):
         v = a.cols["v_V"]
         on = int(np.argmax(v > 0.5))
         off = on + int(np.argmax(v[on:] < 0.5)) - 1
@@ -154,12 +142,12 @@ def test_memory_forms():
     rng = np.random.default_rng(1)
     for r in b.series():
         r.cols["disp_m"] = r.cols["disp_m"] + 5e-7 * rng.normal(size=r.cols["disp_m"].size)
-    s = _run(f10.td_dynamic_filter, base=b)
+    s = run_form(f10.td_dynamic_filter, base=b)
     for a, c in zip(b.series(), s.series()):
         if a.kind == "step":
             rest = slice(5, int(np.argmax(a.cols["v_V"] > 0.5)) - 1)
             assert np.std(np.diff(c.cols["disp_m"][rest])) < 0.7 * np.std(np.diff(a.cols["disp_m"][rest]))
-    s = _run(f10.out_wall_contact)
+    s = run_form(f10.out_wall_contact)
     d0 = np.concatenate([r.cols["disp_m"] for r in BASE.series()])
     d1 = np.concatenate([r.cols["disp_m"] for r in s.series()])
     moved = d1 != d0
@@ -169,7 +157,7 @@ def test_memory_forms():
 def test_repeated_buffers_copy_blocks():
     """Each glitch re-delivers a whole buffer: for one power of two n (64-512), every changed row carries, in v_V, i_A
     and disp_m alike, the row n before it (as it was, or as already re-delivered); the load cell untouched."""
-    s = _run(f10.out_repeated_buffers)
+    s = run_form(f10.out_repeated_buffers)
     cols = ("v_V", "i_A", "disp_m")
     rows = []
     for a, b in zip(BASE.series(), s.series()):

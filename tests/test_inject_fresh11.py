@@ -26,7 +26,7 @@ import inject_fresh9  # noqa: E402
 import inject_fresh10  # noqa: E402
 import inject_fresh11 as f11  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
-from test_inject_fresh2 import BASE  # noqa: E402
+from test_inject_fresh2 import BASE, run_form, step_records  # noqa: E402
 from test_inject_fresh6 import check_case_list, check_forms_new  # noqa: E402
 
 DISP, CUR, FORCE, Z, V = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
@@ -45,18 +45,6 @@ FAINT = {  # columns that change, but by less than 0.05 % of their RMS on the ti
     "overshoot_backoff": DISP | CUR, "orifice_leak": DISP, "root_uplift": DISP, "pc_leakage": DISP,
 }
 FORMS = [(t, n, fn) for t, forms in f11.FRESH11_FORMS.items() for n, fn in forms.items()]
-
-
-def _run(fn, seed: int = 7, base: inject.Session = BASE) -> inject.Session:
-    s = copy.deepcopy(base)
-    s.rng = np.random.default_rng(seed)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        fn(s)
-    return s
-
-
-def _step_records(s: inject.Session) -> list[inject.Rec]:
-    return [r for r in s.series() if r.kind == "step"]
 
 
 def _edges(r: inject.Rec) -> tuple[int, int]:
@@ -91,12 +79,12 @@ def test_amplitude_dependent_forms():
         r.cols["disp_m"] = 0.2 * r.cols["disp_m"]
     share = []
     for base in (BASE, small):
-        s = _run(f11.br_network_stiffening, base=base)
-        a, b = _step_records(base)[0], _step_records(s)[0]
+        s = run_form(f11.br_network_stiffening, base=base)
+        a, b = step_records(base)[0], step_records(s)[0]
         _, off = _edges(a)
         share.append(1 - b.cols["disp_m"][off] / a.cols["disp_m"][off])
     assert share[0] > share[1] > 0
-    s = _run(f11.ld_taut_lead)
+    s = run_form(f11.ld_taut_lead)
     d0 = np.concatenate([r.cols["disp_m"] for r in BASE.series()])
     d1 = np.concatenate([r.cols["disp_m"] for r in s.series()])
     moved = d1 != d0
@@ -108,12 +96,12 @@ def test_history_dependent_forms():
     """The roughened platinum's faradaic current only grows (the later step's plateau carries more); the silver bridge
     builds along a held step; the LuGre loop is wider on a slow sine than on a fast one of the same amplitude (its
     Stribeck excess); the peak-hold cracks hold their gain loss after the bend has come back."""
-    s = _run(f11.far_pt_roughening)
+    s = run_form(f11.far_pt_roughening)
     add = [float(np.mean((b.cols["i_A"] - a.cols["i_A"])[slice(*_edges(a))]))
-           for a, b in zip(_step_records(BASE), _step_records(s))]
+           for a, b in zip(step_records(BASE), step_records(s))]
     assert add[1] > add[0] > 0
-    s = _run(f11.far_silver_migration)
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    s = run_form(f11.far_silver_migration)
+    for a, b in zip(step_records(BASE), step_records(s)):
         on, off = _edges(a)
         dd = b.cols["i_A"] - a.cols["i_A"]
         assert dd[off] > dd[on + 2] >= 0
@@ -134,8 +122,8 @@ def test_history_dependent_forms():
         e = captured["g"] - v
         loops.append(float(np.ptp(e[t > 20])))
     assert loops[0] > loops[1] > 0
-    s = _run(f11.sr_peak_hold)
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    s = run_form(f11.sr_peak_hold)
+    for a, b in zip(step_records(BASE), step_records(s)):
         on, off = _edges(a)
         k = off + int(0.3 * a.fs)  # 0.3 s after the fall: the bend is down, the cracks still open
         assert b.cols["disp_m"][k] / a.cols["disp_m"][k] < b.cols["disp_m"][on + 2] / a.cols["disp_m"][on + 2] + 1e-9
@@ -145,7 +133,7 @@ def test_pressure_and_time_dependent_forms():
     """The seeping hydraulic clamp loses the larger share at the lower pressure; the overshot clamp first rises after
     its back-off, then relaxes; the root lifts off only in the lowest block; the edge-dried strip loses more gain
     than current."""
-    s = _run(f11.cr_orifice_leak)
+    s = run_form(f11.cr_orifice_leak)
     kept = {}
     for a, b in zip(BASE.series(), s.series()):
         kept.setdefault(float(a.entry["pressure_kPa"]), []).append(float(b.cols["force_N"][-1] / a.cols["force_N"][-1]))
@@ -155,17 +143,17 @@ def test_pressure_and_time_dependent_forms():
     keep = f11._clamp_law
     f11._clamp_law = lambda s_, rel: laws.append(rel)
     try:
-        _run(f11.cr_overshoot_backoff)
+        run_form(f11.cr_overshoot_backoff)
     finally:
         f11._clamp_law = keep
     for p in BASE.pressures():  # the law as set (the synthetic load cell's 0.01 kgf hides a rise of 0.3 %)
         x = laws[0](np.linspace(0.0, 3000.0, 3001), p, 0.0)
         assert x.max() > 1.0 > x[-1] and int(np.argmax(x)) > 0
-    s = _run(f11.ld_root_uplift)
+    s = run_form(f11.ld_root_uplift)
     for a, b in zip(BASE.series(), s.series()):
         same = np.array_equal(a.cols["disp_m"], b.cols["disp_m"])
         assert same or float(a.entry["pressure_kPa"]) == min(BASE.pressures())
-    s = _run(f11.dh_edge_drying)
+    s = run_form(f11.dh_edge_drying)
     a, b = BASE.series()[-1], s.series()[-1]
     kd = 1 - b.cols["disp_m"][-1] / a.cols["disp_m"][-1]
     ki = 1 - float(np.sum(b.cols["i_A"] * a.cols["i_A"]) / np.sum(a.cols["i_A"] ** 2))
@@ -175,11 +163,11 @@ def test_pressure_and_time_dependent_forms():
 def test_outside_structures():
     """The droplet's bridge is ohmic (its current is a conductance times the drive, zero where the drive is zero); the
     ESD zaps hit every analogue input at the same sample; the fan's zero is a sawtooth (slow rises, fast falls)."""
-    s = _run(f11.out_droplet_short, seed=3)
+    s = run_form(f11.out_droplet_short, seed=3)
     for a, b in zip(BASE.series(), s.series()):
         di = b.cols["i_A"] - a.cols["i_A"]
         assert np.all(di[a.cols["v_V"] == 0] == 0)
-    s = _run(f11.out_esd_zaps)
+    s = run_form(f11.out_esd_zaps)
     hits = [set(np.flatnonzero(b.cols[c] != a.cols[c]))
             for a, b in zip(BASE.series(), s.series()) for c in ("v_V", "disp_m")]
     assert all(h == h2 for h, h2 in zip(hits[::2], hits[1::2])) and any(hits)

@@ -57,14 +57,24 @@ BASE = _session()
 FORMS = [(t, n, fn) for t, forms in f2.FRESH2_FORMS.items() for n, fn in forms.items()]
 
 
+def run_form(fn, seed: int = 7, base: inject.Session = BASE) -> inject.Session:
+    """A form applied to a copy of the synthetic session (``base``), its draws from ``seed``."""
+    s = copy.deepcopy(base)
+    s.rng = np.random.default_rng(seed)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        fn(s)
+    return s
+
+
+def step_records(s: inject.Session) -> list[inject.Rec]:
+    return [r for r in s.series() if r.kind == "step"]
+
+
 def check_form_changes(name: str, fn, changes: dict[str, set[str]], faint: dict[str, set[str]] | None = None) -> None:
     """The form on the synthetic session: the entries kept, every column finite and of its shape, exactly the columns
     of ``changes[name]`` changed, displacement and current visibly (but for those ``faint`` names). Every set's
     injector test asks this of its forms."""
-    s = copy.deepcopy(BASE)
-    s.rng = np.random.default_rng(7)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        fn(s)
+    s = run_form(fn)
     assert [r.entry for r in s.recs] == [r.entry for r in BASE.recs]
     changed = set()
     for a, b in zip(BASE.recs, s.recs):

@@ -24,7 +24,7 @@ import inject_fresh7  # noqa: E402
 import inject_fresh8  # noqa: E402
 import inject_fresh9 as f9  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
-from test_inject_fresh2 import BASE  # noqa: E402
+from test_inject_fresh2 import BASE, run_form, step_records  # noqa: E402
 from test_inject_fresh6 import check_case_list, check_forms_new  # noqa: E402
 
 DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
@@ -44,14 +44,6 @@ FAINT = {  # columns that change, but by less than 0.05 % of their RMS on the ti
 FORMS = [(t, n, fn) for t, forms in f9.FRESH9_FORMS.items() for n, fn in forms.items()]
 
 
-def _run(fn, seed: int = 7) -> inject.Session:
-    s = copy.deepcopy(BASE)
-    s.rng = np.random.default_rng(seed)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        fn(s)
-    return s
-
-
 @pytest.mark.parametrize("truth,name,fn", FORMS, ids=[n for _, n, _ in FORMS])
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
@@ -68,26 +60,22 @@ def test_forms_are_registered_and_new(monkeypatch):
     assert set(FAINT) <= set(CHANGES)
 
 
-def _step_records(s: inject.Session) -> list[inject.Rec]:
-    return [r for r in s.series() if r.kind == "step"]
-
-
 def test_intermittent_forms_leave_the_rest_untouched():
     """The forms present in part of the session only: the averaging from a re-clamping on (the records of the first
     block bit for bit), the knocked stand from one moment on (every sample before it as it was, a single boundary),
     the tracker's swap from a fast moment to the record's end (a record changed is changed from one sample on)."""
-    s = _run(f9.td_averaging_switched)
+    s = run_form(f9.td_averaging_switched)
     first = min(BASE.pressures())
     for a, b in zip(BASE.series(), s.series()):
         same = np.array_equal(a.cols["disp_m"], b.cols["disp_m"])
         assert same == (float(a.entry["pressure_kPa"]) == first)
-    s = _run(f9.so_bumped_stand)
+    s = run_form(f9.so_bumped_stand)
     t = np.concatenate([a.cols["t_s"] for a in BASE.series()])
     diff = np.concatenate([b.cols["disp_m"] != a.cols["disp_m"] for a, b in zip(BASE.series(), s.series())])
     o = np.argsort(t)
     k = int(np.argmax(diff[o]))
     assert 0 < k and not diff[o][:k].any() and diff[o][k:].mean() > 0.99
-    s = _run(f9.so_tracker_swap)
+    s = run_form(f9.so_tracker_swap)
     n = 0
     for a, b in zip(BASE.series(), s.series()):
         d = b.cols["disp_m"] != a.cols["disp_m"]
@@ -102,7 +90,7 @@ def test_pressure_dependent_forms():
     """The crevice's faradaic current falls with the clamp pressure as (p_min/p)^m, m 0.5-1.2, its shape kept; the
     rocking contact's loss of gain is largest in the lowest block; the viscoplastic pads do not relax below their
     yield (the lowest pressure's load cell untouched) and do above it."""
-    s = _run(f9.far_clamp_crevice)
+    s = run_form(f9.far_clamp_crevice)
     added = {}
     for a, b in zip(BASE.series(), s.series()):
         if a.kind == "step":
@@ -111,11 +99,11 @@ def test_pressure_dependent_forms():
     big = np.abs(added[lo]) > 1e-3 * np.max(np.abs(added[lo]))
     ratio = added[hi][big] / added[lo][big]
     assert (1 / 3) ** 1.2 - 0.01 < np.median(ratio) < (1 / 3) ** 0.5 + 0.01 and np.ptp(ratio) < 1e-6
-    s = _run(f9.sr_rocking_contact)
+    s = run_form(f9.sr_rocking_contact)
     loss = [float(np.max(np.abs(a.cols["disp_m"] - b.cols["disp_m"])) / np.max(np.abs(a.cols["disp_m"])))
-            for a, b in zip(_step_records(BASE), _step_records(s))]
+            for a, b in zip(step_records(BASE), step_records(s))]
     assert loss[0] > loss[1] > 0
-    s = _run(f9.cr_perzyna_overstress)
+    s = run_form(f9.cr_perzyna_overstress)
     for a, b in zip(BASE.series(), s.series()):
         same = np.array_equal(a.cols["force_N"], b.cols["force_N"])
         assert same == (float(a.entry["pressure_kPa"]) == min(BASE.pressures()))
@@ -126,19 +114,19 @@ def test_time_dependent_forms():
     """The top-up makes the back-flow stronger after it (the step's give-back by its plateau's end larger in the later
     block); the re-aerating bath's limiting current grows from block to block; the stress-corrosion cracks only grow
     (the second step loses a larger share of its gain than the first)."""
-    s = _run(f9.br_bath_topup)
+    s = run_form(f9.br_bath_topup)
     kept = []
-    for a, b in zip(_step_records(BASE), _step_records(s)):
+    for a, b in zip(step_records(BASE), step_records(s)):
         v = a.cols["v_V"]
         off = int(np.argmax(v > 0.5)) + int(np.argmax(v[np.argmax(v > 0.5):] < 0.5)) - 1
         kept.append(b.cols["disp_m"][off] / a.cols["disp_m"][off])
     assert kept[1] < kept[0] < 1
-    s = _run(f9.far_reaeration)
-    plate = [float(np.max(b.cols["i_A"] - a.cols["i_A"])) for a, b in zip(_step_records(BASE), _step_records(s))]
+    s = run_form(f9.far_reaeration)
+    plate = [float(np.max(b.cols["i_A"] - a.cols["i_A"])) for a, b in zip(step_records(BASE), step_records(s))]
     assert plate[1] > plate[0] > 0
-    s = _run(f9.sr_stress_corrosion)
+    s = run_form(f9.sr_stress_corrosion)
     loss = [float(np.max(np.abs(a.cols["disp_m"] - b.cols["disp_m"])) / np.max(np.abs(a.cols["disp_m"])))
-            for a, b in zip(_step_records(BASE), _step_records(s))]
+            for a, b in zip(step_records(BASE), step_records(s))]
     assert loss[1] > loss[0] > 0
 
 
