@@ -42,8 +42,11 @@
 * Fresh11 held-out set (``--set fresh11``, bench/inject_fresh11.py ``fresh11_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 103-105, a new
   data shape (the stepped sines cut by their settling cycles, the manifest without labels or cycle counts).
+* Fresh12 held-out set (``--set fresh12``, bench/inject_fresh12.py ``fresh12_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 106-108, a new
+  data shape (the step records cut by a short pretrigger buffer).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -129,7 +132,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh8": "fresh8 held-out set (diagnosed once unseen at d03d766; seen since)",
           "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)",
           "fresh10": "fresh10 held-out set (diagnosed once unseen at 7041ed2; seen since)",
-          "fresh11": "fresh11 held-out set (unseen)"}
+          "fresh11": "fresh11 held-out set (diagnosed once unseen at 3e229bf; seen since)",
+          "fresh12": "fresh12 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
