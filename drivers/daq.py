@@ -52,7 +52,7 @@ GONE_CODES = {-201003, -88705, -88709}  # device cannot be accessed / not presen
 WATCHDOG_EXPIRED_WRITE = -200678  # DAQmxErrors.WRITE_FAILED_BECAUSE_WATCHDOG_EXPIRED
 GONE_RPC = {grpc.StatusCode.UNAVAILABLE, grpc.StatusCode.CANCELLED}
 BLOCK_S = 0.25  # rig seconds per streamed block of a finite record: how late a limit check can be at 1x
-BLOCK_WALL_S = 0.002  # ... but never fewer wall seconds than this (a read costs ~1 ms: a 1000x bench)
+BLOCK_WALL_S = 0.01  # ... but never fewer wall seconds than this: a read is a gRPC round trip costing ~1 ms of CPU on each side, and at 100x 0.25 s blocks read 400 times a wall second (a simulated paper sweep: 23 s of CPU at 2 ms, 16 s at 10 ms)
 READ_MARGIN_S = 2.0  # rig seconds a block may come late before the read times out
 CHANNEL_OPTIONS = [
     ("grpc.max_receive_message_length", -1),  # large blocks exceed the 4 MB default
