@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 
@@ -41,6 +41,26 @@ class Context:
     cache: dict = field(default_factory=dict)  # what an extension precomputes once per context (it depends on the specimens only)
     step_timing: list = field(default_factory=list)  # per step: (displacement, current) sampling uncertainty at the edges
     spectra: list = field(default_factory=list)  # (SpectrumFeature, the baseline's Z there): no extension changes Z
+
+
+_BY_RECORDS: dict[tuple, tuple[tuple, Any]] = {}  # (kind, the lists' ids) -> (the lists, what was made of them)
+_BY_RECORDS_KEPT = 96
+
+
+def by_records(kind: str, records: tuple, make: Callable[[], Any]) -> Any:
+    """``make()`` once per ``kind`` and tuple of record lists (a context's ``sines``, ``steps``, ``lines``, ...), by
+    identity: what derives from the measured records alone is made once for every context around them (the blocks
+    are evaluated thousands of times in a fit, on contexts that a copy or a refit of the mechanics makes anew around
+    the same lists)."""
+    key = (kind, *map(id, records))
+    hit = _BY_RECORDS.get(key)
+    if hit is not None and all(a is b for a, b in zip(hit[0], records)):
+        return hit[1]
+    out = make()
+    if len(_BY_RECORDS) >= _BY_RECORDS_KEPT:
+        del _BY_RECORDS[next(iter(_BY_RECORDS))]
+    _BY_RECORDS[key] = (records, out)  # the lists kept alive with it: their ids cannot be reused while cached
+    return out
 
 
 @dataclass

@@ -19,7 +19,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from labrig.diagnose.artefacts import artefacts, detail as artefact_detail, level as artefact_level
-from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline
+from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline, by_records
 from labrig.diagnose.line_levels import line_arrays, line_levels
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
@@ -117,24 +117,6 @@ def _force_rel(ctx: Context) -> tuple[np.ndarray, np.ndarray]:
     return rel, sig
 
 
-_MEASURED: dict[tuple, tuple[tuple, Any]] = {}  # by the records' ids, as line_levels.line_arrays
-_MEASURED_KEPT = 64
-
-
-def _kept(owners: tuple, make) -> Any:
-    """``make()`` once per tuple of record lists (by identity): the blocks are evaluated thousands of times in a fit,
-    on contexts that a refit of the mechanics makes anew around the same records."""
-    key = tuple(map(id, owners))
-    hit = _MEASURED.get(key)
-    if hit is not None and all(a is b for a, b in zip(hit[0], owners)):
-        return hit[1]
-    out = make()
-    if len(_MEASURED) >= _MEASURED_KEPT:
-        del _MEASURED[next(iter(_MEASURED))]
-    _MEASURED[key] = (owners, out)
-    return out
-
-
 def _measured_sines(ctx: Context) -> tuple:
     """What ``blocks`` compares the sine records' predictions with: ((key, measured, sigma, |measured| twice) of each
     FRF, (key, which, measured (n, 2), sigma) of each harmonic block, (relative force, its sigma))."""
@@ -149,7 +131,7 @@ def _measured_sines(ctx: Context) -> tuple:
                      for key, which, rel_noise in (("harm_d", "d", sd / np.abs(Hd_m)), ("harm_i", "i", si / np.abs(Hi_m))))
         return frf, harm, _force_rel(ctx)
 
-    return _kept((ctx.sines,), make)
+    return by_records("measured_sines", (ctx.sines, ctx.force_nominal), make)
 
 
 def _measured_steps(ctx: Context) -> list:
@@ -165,7 +147,7 @@ def _measured_steps(ctx: Context) -> list:
             out.append((per, math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))))
         return out
 
-    return _kept((ctx.steps, ctx.step_timing), make)
+    return by_records("measured_steps", (ctx.steps, ctx.step_timing), make)
 
 
 def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.ndarray]]:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context
+from labrig.diagnose.catalogue import Context, by_records
 
 LEVEL_GRID = np.r_[0.0, np.geomspace(1e-3, 1e3, 81)]  # a record's pickup level relative to the fitted lines' (x1.19 steps)
 
@@ -31,26 +31,18 @@ class LineArrays:
     rms: np.ndarray
 
 
-_LINE_ARRAYS: dict[int, tuple[list, LineArrays]] = {}  # by the lines' list: contexts copied or refitted share it
-_LINE_ARRAYS_KEPT = 32
-
-
 def line_arrays(ctx: Context) -> LineArrays:
-    """``LineArrays`` of the context's lines, built once per list of lines (the blocks are evaluated thousands of
-    times in a fit, on contexts that a refit of the mechanics makes anew around the same records)."""
-    hit = _LINE_ARRAYS.get(id(ctx.lines))
-    if hit is not None and hit[0] is ctx.lines:
-        return hit[1]
-    rows = [(r, k, line.amp[k], line.floor[k], line.rms[k[0]]) for r, line in enumerate(ctx.lines)
+    """``LineArrays`` of the context's lines, built once per list of lines (``catalogue.by_records``)."""
+    return by_records("line_arrays", (ctx.lines,), lambda: _line_arrays(ctx.lines))
+
+
+def _line_arrays(lines: list) -> LineArrays:
+    rows = [(r, k, line.amp[k], line.floor[k], line.rms[k[0]]) for r, line in enumerate(lines)
             for k in line.amp if np.isfinite(line.floor[k]) and line.floor[k] > 0]
     keys = sorted({row[1] for row in rows})
     index = {k: j for j, k in enumerate(keys)}
     col = (lambda j, dt=float: np.array([row[j] for row in rows], dtype=dt))
-    out = LineArrays(keys, np.array([index[row[1]] for row in rows], dtype=int), col(0, int), col(2), col(3), col(4))
-    if len(_LINE_ARRAYS) >= _LINE_ARRAYS_KEPT:
-        _LINE_ARRAYS.pop(next(iter(_LINE_ARRAYS)))
-    _LINE_ARRAYS[id(ctx.lines)] = (ctx.lines, out)
-    return out
+    return LineArrays(keys, np.array([index[row[1]] for row in rows], dtype=int), col(0, int), col(2), col(3), col(4))
 
 
 def line_levels(amp: np.ndarray, la: LineArrays) -> np.ndarray:
