@@ -22,6 +22,10 @@ from labrig.physics import presets, timeresp, transfer
 from labrig.physics.params import Specimen
 from mock_devices.world_api import SimClock as Clock
 
+# zero padding of the strip's time responses over a record's window (history + record + tail), as a multiple of it:
+# the error the exponential window lifts falls about 24-fold per doubling (docs/model.md 6)
+SIM_PAD = 7.0
+
 
 @dataclass
 class Noise:
@@ -201,8 +205,12 @@ class World:
                 if sel.any():
                     u[:k0][sel] = np.interp(grid[sel], h.t0 + np.arange(h.v.size) / h.fs, h.v)
             u[k0 : k0 + n] = v
+            # the exponential window lifts the response's numerical error by 1e9^(t / T_fft) at time t: with the default
+            # padding a record read at the end of a long history is lifted 3e4-fold: the current's error near Nyquist
+            # (the drive's steps are broadband, the admittance flat up there) grew into an alternating current of up to
+            # 1e-4 A by a 0.1 Hz record's end, which the spell test rightly flagged on the clean bench
             disp, cur = timeresp.simulate_many(
-                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs
+                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs, pad=SIM_PAD
             )
             self._history.append(_Segment(t0, fs, v.copy()))
             self._trace = _Trace(t0, fs, disp[k0:].copy())
