@@ -8,14 +8,14 @@ instead integrates f_app = d^2 M_app/dx^2 (eq. 26) against phi_i without the end
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 
 import numpy as np
 
 from labrig.physics import beam, hydro
 from labrig.physics.impedance import charging_admittance, impedance, propagation, voltage_along
-from labrig.physics.params import Specimen
+from labrig.physics.params import ClampElectrical, LineElectrical, Specimen
 
 QUAD_NODES = 48  # exact to 1e-13 for 10 modes up to 1 kHz (checked against 300 nodes)
 _LEGENDRE = np.polynomial.legendre.leggauss(QUAD_NODES)  # nodes and weights on [-1, 1], computed once
@@ -73,8 +73,24 @@ def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float, lever: 
     return bl, nodes, weights, phi / norm, phi2 / norm, phi_s
 
 
-@lru_cache(maxsize=1024)
 def modal_set(sp: Specimen) -> ModalSet:
+    """The modes of ``sp``. They read only its geometry, fluid, mechanics (not alpha), K_t bar, mode count and
+    sensor: the cache is keyed on those, so a fit's step in a contact or line parameter (or alpha) reuses them."""
+    return _modal_set(_mechanical(sp))
+
+
+def _mechanical(sp: Specimen) -> Specimen:
+    """``sp`` with every field the modes do not read set to one canonical value (the cache key of ``modal_set``)."""
+    return Specimen(sp.geometry, sp.fluid, _NO_LINE, _NO_CLAMP, replace(sp.mechanics, alpha=0.0), float(sp.Kt_bar),
+                    None, int(sp.n_modes), float(sp.x_sensor), float(sp.sensor_lever))
+
+
+_NO_LINE = LineElectrical(1.0, 1.0, 1.0, 1.0, 1.0)
+_NO_CLAMP = ClampElectrical(1.0, 1.0, 1.0, 1.0, 1.0, 1.0)
+
+
+@lru_cache(maxsize=1024)
+def _modal_set(sp: Specimen) -> ModalSet:
     g, m = sp.geometry, sp.mechanics
     L = g.length
     bl, nodes, weights, phi, phi2, phi_s = _shapes(float(sp.Kt_bar), int(sp.n_modes), L, float(sp.x_sensor), float(sp.sensor_lever))
