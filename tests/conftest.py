@@ -11,6 +11,14 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")  # the live window tests need no display
+# the diagnosis scores its candidates in this process: the two test workers and the shared sweeps already fill both
+# cores, and forked scorers add a tenth to its CPU (each recomputes what the others cached); tests/test_diagnose_parallel.py forks them
+os.environ.setdefault("LABRIG_DIAGNOSE_WORKERS", "1")
+# one BLAS thread per process (set before numpy loads, inherited by every subprocess): with two test workers and the
+# shared sweeps on two cores, OpenBLAS's threads only spin against each other. The artefact tests' least squares
+# on 12000-sample records took 17-23 s each in the suite, 2-2.6 s alone, and half their CPU went to the second thread
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
 
 _status = {"code": 0}
 _bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed (else fitted only)
