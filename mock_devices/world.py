@@ -22,9 +22,12 @@ from labrig.physics import presets, timeresp, transfer
 from labrig.physics.params import Specimen
 from mock_devices.world_api import SimClock as Clock
 
-# zero padding of the strip's time responses over a record's window (history + record + tail), as a multiple of it:
-# the error the exponential window lifts falls about 24-fold per doubling (docs/model.md 6)
-SIM_PAD = 7.0
+# the strip's time responses over a record's window (history + record + tail): zero padding, as a multiple of the
+# window, and the exponential window's damping. Its error at time t is lifted by damping^(t / T_fft); with the
+# defaults (1, 1e9) a block at the end of 120 s of history read the current 4.8e-5 A off. These keep both channels
+# under a tenth of their noise at 1.5 times the default's cost (docs/model.md 6)
+SIM_PAD = 2.0
+SIM_DAMPING = 1e5
 
 
 @dataclass
@@ -210,7 +213,7 @@ class World:
             # (the drive's steps are broadband, the admittance flat up there) grew into an alternating current of up to
             # 1e-4 A by a 0.1 Hz record's end, which the spell test rightly flagged on the clean bench
             disp, cur = timeresp.simulate_many(
-                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs, pad=SIM_PAD
+                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs, SIM_PAD, SIM_DAMPING
             )
             self._history.append(_Segment(t0, fs, v.copy()))
             self._trace = _Trace(t0, fs, disp[k0:].copy())

@@ -23,7 +23,7 @@ from scipy.interpolate import CubicSpline
 
 TransferFunction = Callable[[np.ndarray], np.ndarray]
 
-_DAMPING = np.log(1e9)  # sigma * T_fft
+DAMPING = 1e9  # exp(sigma T_fft): how far the response's wrapped-around part is attenuated
 _EXACT_BINS = 256
 _PER_DECADE = 160
 
@@ -48,11 +48,13 @@ def _grid_values(tfs: Sequence[TransferFunction], s_bins: np.ndarray) -> list[np
     return out
 
 
-def transfer_grid(tfs: Sequence[TransferFunction], n: int, fs: float, pad: float = 1.0) -> tuple[int, float, list[np.ndarray]]:
+def transfer_grid(tfs: Sequence[TransferFunction], n: int, fs: float, pad: float = 1.0,
+                  damping: float = DAMPING) -> tuple[int, float, list[np.ndarray]]:
     """(nfft, sigma, each H on the grid) for drives of n samples at fs: what ``respond`` needs, computed once for
-    any number of drives of that length (a fit that changes only the drive reuses it)."""
+    any number of drives of that length (a fit that changes only the drive reuses it). ``damping``: exp(sigma
+    T_fft); the numerical error at time t comes back lifted by damping^(t / T_fft) (docs/model.md 6)."""
     nfft = sfft.next_fast_len(int(n * (1.0 + pad)) + 16, real=True)
-    sigma = _DAMPING / (nfft / fs)
+    sigma = np.log(damping) / (nfft / fs)
     s_bins = sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
     return nfft, sigma, _grid_values(tfs, s_bins)
 
@@ -70,17 +72,19 @@ def respond(u: np.ndarray, fs: float, grid: tuple[int, float, list[np.ndarray]])
     return [sfft.irfft(U * H, nfft)[:n] * grow for H in Hs]
 
 
-def simulate_many(tfs: Sequence[TransferFunction], u: np.ndarray, fs: float, pad: float = 1.0) -> list[np.ndarray]:
+def simulate_many(tfs: Sequence[TransferFunction], u: np.ndarray, fs: float, pad: float = 1.0,
+                  damping: float = DAMPING) -> list[np.ndarray]:
     """Responses of several transfer functions to the same drive ``u`` sampled at ``fs`` (system at rest at t=0).
 
-    ``pad``: zero padding as a fraction of the record (1.0 doubles it) so the response's own tail has room.
+    ``pad``: zero padding as a fraction of the record (1.0 doubles it) so the response's own tail has room;
+    ``damping``: ``transfer_grid``'s.
     """
     u = np.asarray(u, float)
     if u.size == 0:
         return [np.zeros(0) for _ in tfs]
-    return respond(u, fs, transfer_grid(tfs, u.size, fs, pad))
+    return respond(u, fs, transfer_grid(tfs, u.size, fs, pad, damping))
 
 
-def simulate(tf: TransferFunction, u: np.ndarray, fs: float, pad: float = 1.0) -> np.ndarray:
+def simulate(tf: TransferFunction, u: np.ndarray, fs: float, pad: float = 1.0, damping: float = DAMPING) -> np.ndarray:
     """Response of one transfer function H(s) to the drive ``u`` (see module docstring)."""
-    return simulate_many([tf], u, fs, pad)[0]
+    return simulate_many([tf], u, fs, pad, damping)[0]
