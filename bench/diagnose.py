@@ -133,7 +133,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh9": "fresh9 held-out set (diagnosed once unseen at 8c11cb3; seen since)",
           "fresh10": "fresh10 held-out set (diagnosed once unseen at 7041ed2; seen since)",
           "fresh11": "fresh11 held-out set (diagnosed once unseen at 3e229bf; seen since)",
-          "fresh12": "fresh12 held-out set (unseen)"}
+          "fresh12": "fresh12 held-out set (diagnosed once unseen at 277c32f, the diagnosis as at 3e229bf; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
