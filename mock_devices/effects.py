@@ -17,9 +17,9 @@ import numpy as np
 from scipy import fft as sfft
 from scipy import signal
 
-from labrig.physics import hammerstein, timeresp, transfer
+from labrig.physics import hammerstein, transfer
 from labrig.physics.params import Specimen
-from mock_devices.world import SIM_DAMPING, SIM_PAD, World, Effect, RecordWindow
+from mock_devices.world import World, Effect, RecordWindow, window_response
 
 
 class WindowEffect(Effect):
@@ -111,7 +111,7 @@ class Hysteresis(WindowEffect):
     def transform(self, w: RecordWindow, bench: World) -> tuple[np.ndarray, np.ndarray]:
         du = self.gamma(w.u) - w.u
         sp = w.specimen
-        return w.displacement + timeresp.simulate(lambda s: transfer.displacement_tf(s, sp), du, w.fs, SIM_PAD, SIM_DAMPING), w.current
+        return w.displacement + window_response([lambda s: transfer.displacement_tf(s, sp)], du, w.fs)[0], w.current
 
 
 @dataclass(repr=False)
@@ -143,7 +143,7 @@ class StrainResistance(WindowEffect):
         def sens(tf):  # d tf / d ln R_s, central difference
             return lambda s: (tf(s, at(1 + k)) - tf(s, at(1 - k))) / (2 * k)
 
-        sd, si = timeresp.simulate_many([sens(transfer.displacement_tf), sens(transfer.admittance_tf)], w.u, w.fs, SIM_PAD, SIM_DAMPING)
+        sd, si = window_response([sens(transfer.displacement_tf), sens(transfer.admittance_tf)], w.u, w.fs)
         eps = self.eps(w.displacement, sp)
         return w.displacement + eps * sd, w.current + eps * si
 

@@ -23,11 +23,17 @@ from labrig.physics.params import Specimen
 from mock_devices.world_api import SimClock as Clock
 
 # the strip's time responses over a record's window (history + record + tail): zero padding, as a multiple of the
-# window, and the exponential window's damping. Its error at time t is lifted by damping^(t / T_fft); with the
-# defaults (1, 1e9) a block at the end of 120 s of history read the current 4.8e-5 A off. These keep both channels
-# under a tenth of their noise at 1.5 times the default's cost (docs/model.md 6)
+# window, and the exponential window's damping. Its error at time t is lifted by damping^(t / T_fft): with the
+# defaults (1, 1e9) a block at the end of 120 s of history read the current 4.8e-5 A off, an alternating current
+# the spell test rightly flagged on the clean bench. These keep both channels under a quarter of their noise at 1.5
+# times the default's cost (docs/model.md 6)
 SIM_PAD = 2.0
 SIM_DAMPING = 1e5
+
+
+def window_response(tfs: list, u: np.ndarray, fs: float) -> list[np.ndarray]:
+    """Responses of ``tfs`` to a record's whole window ``u`` (its history first), as the bench simulates them."""
+    return timeresp.simulate_many(tfs, u, fs, SIM_PAD, SIM_DAMPING)
 
 
 @dataclass
@@ -208,13 +214,7 @@ class World:
                 if sel.any():
                     u[:k0][sel] = np.interp(grid[sel], h.t0 + np.arange(h.v.size) / h.fs, h.v)
             u[k0 : k0 + n] = v
-            # the exponential window lifts the response's numerical error by 1e9^(t / T_fft) at time t: with the default
-            # padding a record read at the end of a long history is lifted 3e4-fold: the current's error near Nyquist
-            # (the drive's steps are broadband, the admittance flat up there) grew into an alternating current of up to
-            # 1e-4 A by a 0.1 Hz record's end, which the spell test rightly flagged on the clean bench
-            disp, cur = timeresp.simulate_many(
-                [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs, SIM_PAD, SIM_DAMPING
-            )
+            disp, cur = window_response([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], u, fs)
             self._history.append(_Segment(t0, fs, v.copy()))
             self._trace = _Trace(t0, fs, disp[k0:].copy())
             self.window = RecordWindow(t0, fs, k0, n, u, disp, cur, sp)
