@@ -65,3 +65,29 @@ def curled_arc(th, ctx: Context):
     for k, d in enumerate(p.step_d):
         p.step_d[k] = curled_reading(d, theta0, ell)
     return p
+
+
+def drifting_arc(th, ctx: Context):
+    """``curled_arc`` with the rest curl changing through the session, theta0 = theta_a + (theta_b - theta_a) u, u the
+    record's start as a share of the session's span: a strip that curls as it dries or takes a set, or a mount that
+    tilts. Each record read at its own theta0 (sines by the describing function, steps through the map)."""
+    theta_a, theta_b, lam = th
+    ell = lam * ctx.length
+    p = baseline(ctx)
+    wt = 2 * np.pi * np.arange(_GRID) / _GRID
+    p.hd = p.hd.astype(complex)
+    for k, s in enumerate(ctx.sines):
+        theta0 = theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(s.t_start))
+        a1 = p.Hd[k] * _drive(s)
+        amp, phase = abs(a1), np.exp(1j * np.angle(a1))
+        if amp <= 0:
+            continue
+        c = 2 * np.fft.rfft(curled_reading(amp * np.cos(wt), theta0, ell))[1:4].real / _GRID
+        c1 = c[0] if c[0] != 0 else 1.0
+        p.hd[k, 0] += c[1] / c1 * phase
+        p.hd[k, 1] += c[2] / c1 * phase**2
+        p.Hd[k] *= c1 / amp
+    for k, (st, d) in enumerate(zip(ctx.steps, p.step_d)):
+        theta0 = theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(st.t_start))
+        p.step_d[k] = curled_reading(d, theta0, ell)
+    return p

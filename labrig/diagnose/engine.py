@@ -315,6 +315,10 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([-0.4, 0.8, 1.0])]  # stop operators
     if ext.form == "transport":
         starts += [np.array([1e-4, 0.45, 0.04, 3.0, 3.0, 0.05])]  # a reduction wave at +-E_half (the first start: a couple at 0 V)
+    if ext.form == "lowpass":
+        starts += [np.array([0.03, 6.0])]  # a longer filter of more poles, towards the delay
+    if ext.form == "station":
+        starts += [np.array([1.0, 0.75]), np.array([0.75, 1.0])]  # the station moving inboard or outboard
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)

@@ -28,8 +28,9 @@ from scipy.signal import lfilter
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read)
 from labrig.diagnose import slow_forms as slow
-from labrig.diagnose.arc import curled_arc
+from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
+from labrig.diagnose.sensor_path import lowpass, station
 from labrig.physics import timeresp
 
 _N = 64
@@ -377,6 +378,9 @@ FAMILIES["large_deflection"] += [
     _form("large_deflection", "curled_arc", ("theta0_rad", "length_factor"), (0.2, 1.0), (-1.2, 0.02), (1.2, 5.0), curled_arc,
           "the arc read around a rest curl or a tilted beam, y = l [f(theta0 + 2 d/l) - f(theta0)]/(2 f'(theta0)), "
           "f(x) = (1 - cos x)/x: even and odd distortion tied by one geometry"),
+    _form("large_deflection", "drifting_curl", ("theta_start_rad", "theta_end_rad", "length_factor"), (0.1, 0.3, 1.0), (-1.2, -1.2, 0.02),
+          (1.2, 1.2, 5.0), drifting_arc, "the curled arc with its rest curl moving through the session, theta0 from theta_start "
+          "to theta_end: a strip curling as it dries or takes a set"),
 ]
 _MAINS_KEYS = [(ch, f) for ch in LINE_CHANNELS for f in LINE_HZ]
 _MAINS_SCALE = np.array([LINE_CHANNELS[ch][3] for ch, _ in _MAINS_KEYS])
@@ -426,10 +430,16 @@ FAMILIES["time_delay"] += [
     _form("time_delay", "skew", ("tau_disp_s", "tau_cur_s"), (0.005, 0.0), (-0.2, -0.2), (0.2, 0.2), _skew,
           "each channel's own delay after the recorded drive, exp(-s tau_d) and exp(-s tau_i) (equal and negative: the "
           "drive's monitor late)", refit_mechanics=True),
+    _form("time_delay", "lowpass", ("tau_s", "order"), (0.005, 2.0), (0.0, 1.0), (0.1, 30.0), lowpass,
+          "the displacement read through (1 + s tau/n)^-n: a sensor's averaging, servo or anti-alias filter of a few poles "
+          "(n = 1: the lag; n large: the delay)", refit_mechanics=True),
 ]
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
           "a rigid flag at the tip read lever e beyond it, w(L) + e w'(L) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
+    _form("sensor_offset", "station", ("x_low_over_L", "x_high_over_L"), (0.9, 0.9), (0.3, 0.3), (1.5, 1.5), station,
+          "the spot's station moving with the clamp's setting, x_m linear in the pressure from the lowest to the highest "
+          "(beyond 1: a flag past the tip): a laser on the clamp's frame or jaw", refit_mechanics=True),
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),

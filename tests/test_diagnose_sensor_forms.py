@@ -1,0 +1,87 @@
+"""The sixteenth pass' forms (issue 12): the sensor's own low-pass and a station moving with the clamp's setting
+(labrig/diagnose/sensor_path.py), the rest curl drifting through the session (labrig/diagnose/arc.py)."""
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from labrig.diagnose.arc import curled_arc, drifting_arc
+from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
+from labrig.diagnose.sensor_path import lowpass, lowpass_tf, station
+from labrig.physics import presets, timeresp, transfer
+
+PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)
+
+
+def _context(freqs=(0.5, 5.0, 20.0), pressures=PRESSURES, t_starts=None, drive=0.5):
+    """A context of sine records on the paper strip: one per (pressure, frequency), the baseline FRFs its own."""
+    strip = presets.get("paper")
+    specimens = {p: strip.specimen(p) for p in pressures}
+    sines = []
+    for k, (p, f) in enumerate((p, f) for p in pressures for f in freqs):
+        t0 = k * 100.0 if t_starts is None else t_starts[k]
+        sines.append(SimpleNamespace(f=f, pressure_kPa=p, t_start=t0, est=SimpleNamespace(drive=np.array([drive + 0j]))))
+    n = len(sines)
+    feats = SimpleNamespace(pressures=lambda: sorted(pressures), t0=0.0, t1=100.0 * n,
+                            time_share=lambda t: np.clip(np.asarray(t, float) / (100.0 * n), 0.0, 1.0))
+    hd = frf_by_pressure(sines, specimens)
+    return Context(feats=feats, specimens=specimens, sines=sines, steps=[], lines=[], Hd=hd, Hi=np.ones(n, complex),
+                   Hd3=np.zeros(n, complex), step_d=[], step_i=[], force_nominal=np.zeros(n), area=1.0,
+                   length=strip.specimen(PRESSURES[0]).geometry.length)
+
+
+def test_the_lowpass_spans_the_lag_and_the_delay_and_is_causal():
+    """(1 + s tau/n)^-n: the first-order lag at n = 1, the delay exp(-s tau) as n grows, unit gain at DC; a step
+    through it starts at its edge and settles to its height."""
+    s = 2j * np.pi * np.array([0.1, 1.0, 10.0, 30.0])
+    tau = 0.004
+    np.testing.assert_allclose(lowpass_tf(s, tau, 1.0), 1 / (1 + s * tau), rtol=1e-12)
+    err = [np.max(np.abs(lowpass_tf(s, tau, n) - np.exp(-s * tau))) for n in (3.0, 30.0, 300.0)]
+    assert err[0] > 8 * err[1] > 64 * err[2] and err[2] < 1e-3  # (1 + x/n)^-n -> e^-x as |x|^2/2n
+    assert lowpass_tf(0.0, tau, 3.7) == pytest.approx(1.0)
+    fs = 2000.0
+    x = np.r_[np.zeros(200), np.ones(1800)]
+    y = timeresp.simulate(lambda z: lowpass_tf(z, 0.01, 4.0), x, fs)
+    assert np.max(np.abs(y[:195])) < 1e-6  # nothing before the edge
+    assert y[200 + 10] < 0.5 < y[200 + 40]  # half-way near the group delay (10 ms = 20 samples)
+    assert y[-1] == pytest.approx(1.0, abs=1e-5)
+
+    ctx = _context()
+    p = lowpass(np.array([tau, 2.5]), ctx)
+    f = np.array([sn.f for sn in ctx.sines])
+    np.testing.assert_allclose(p.Hd / ctx.Hd, lowpass_tf(2j * np.pi * f, tau, 2.5), rtol=1e-12)
+    np.testing.assert_allclose(lowpass(np.array([0.0, 2.5]), ctx).Hd, ctx.Hd)
+
+
+def test_the_station_moves_with_the_clamp_pressure_and_is_the_beam_when_it_does_not():
+    """x_m linear in the pressure over the session's range: equal ends read as the beam form at that x_m; otherwise the
+    lowest pressure reads at its own x_m, the highest at its own, one in between at the interpolated one; past 1 the
+    spot reads a rigid flag beyond the tip."""
+    ctx = _context()
+    L = ctx.length
+    np.testing.assert_allclose(station(np.array([0.8, 0.8]), ctx).Hd, sensor_read(ctx, sensor_x=0.8 * L).Hd, rtol=1e-12)
+    moving = station(np.array([1.0, 0.7]), ctx).Hd
+    for k, sn in enumerate(ctx.sines):
+        u = (sn.pressure_kPa - PRESSURES[0]) / (PRESSURES[-1] - PRESSURES[0])
+        sp = ctx.specimens[sn.pressure_kPa].with_(sensor_x=(1.0 - 0.3 * u) * L)
+        assert moving[k] == pytest.approx(transfer.frf(np.array([sn.f]), sp)[0], rel=1e-12)
+    assert abs(moving[-1]) < 0.7 * abs(ctx.Hd[-1])  # read inboard at the top pressure: less of the tip's motion
+    flag = station(np.array([1.1, 1.1]), ctx).Hd
+    np.testing.assert_allclose(flag, sensor_read(ctx, sensor_lever=0.1 * L).Hd, rtol=1e-12)
+
+
+def test_the_drifting_curl_is_the_curled_arc_read_at_each_records_moment():
+    """Equal ends: the curled arc. A drift: the session's first record read at theta_start, its last at theta_end."""
+    ctx = _context(freqs=(1.0,), drive=2.0)
+    same_a, same_b = drifting_arc(np.array([0.3, 0.3, 1.0]), ctx), curled_arc(np.array([0.3, 1.0]), ctx)
+    np.testing.assert_allclose(same_a.Hd, same_b.Hd, rtol=1e-12)
+    np.testing.assert_allclose(same_a.hd, same_b.hd, rtol=1e-12, atol=1e-15)
+    n = len(ctx.sines)
+    share = ctx.sines[-1].t_start / (100.0 * n)
+    drift = drifting_arc(np.array([0.0, 0.6, 1.0]), ctx)
+    first, last = curled_arc(np.array([0.0, 1.0]), ctx), curled_arc(np.array([0.6 * share, 1.0]), ctx)
+    assert drift.hd[0, 0] == pytest.approx(first.hd[0, 0], abs=1e-15)  # flat at the start: no even harmonic
+    assert abs(drift.hd[0, 0]) < 1e-12
+    assert drift.hd[-1, 0] == pytest.approx(last.hd[-1, 0], rel=1e-9)
+    assert abs(drift.hd[-1, 0]) > 1e-3  # curled by then: the even harmonic grows through the session
