@@ -25,6 +25,7 @@ from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
+from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
@@ -319,6 +320,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.03, 6.0])]  # a longer filter of more poles, towards the delay
     if ext.form == "station":
         starts += [np.array([1.0, 0.75]), np.array([0.75, 1.0])]  # the station moving inboard or outboard
+    if ext.form == "static_map":
+        starts += [np.array([0.02, 1.0, 0.0, 1.0]), np.array([0.1, 0.0, -0.2, 1.0])]  # a narrow deep dead zone; clipping
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)
@@ -478,6 +481,36 @@ def _significant(cands: list[Candidate], missed_blocks: set, ratio: float = RATI
                                      c.heldout_ratio))
 
 
+@dataclass
+class Rival:
+    """The drive-path rival that took the verdict from ``instead_of``, lowering ``lowered`` (structured blocks it left)."""
+
+    fit: Candidate
+    instead_of: Candidate
+    lowered: list[str]
+
+    def report(self) -> dict[str, Any]:
+        return {"form": self.fit.form, "heldout_ratio": self.fit.heldout_ratio, "delta_bic": self.fit.delta_bic, "params": self.fit.params,
+                "instead_of": self.instead_of.name, "its_ratio": self.instead_of.heldout_ratio, "blocks_it_lowers": self.lowered}
+
+
+def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], accuracy: dict[str, float]) -> Rival | None:
+    """The drive-path rival (rivals.py) where it takes the verdict from the named cause: it is significant as an effect
+    would be, predicts the held-out half at least as well, and lowers a structured block the named cause leaves where
+    the base put it (the signature: a distorted drive reaches both channels, a catalogued cause only its own). Fitted
+    only where the named cause leaves such a block (the rule cannot hold otherwise)."""
+    if not named or named[0].held is None:
+        return None
+    untouched = [k for k in _structured_blocks(base_rms, accuracy) if not _moves(named[0], k, base_rms[k])]
+    if not untouched:
+        return None
+    r = scorer.score_form(DRIVE_PATH.name, DRIVE_PATH)
+    if not (r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and r.heldout_ratio <= named[0].heldout_ratio):
+        return None
+    lowered = [k for k in untouched if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
+    return Rival(r, named[0], lowered) if lowered else None
+
+
 def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, Context]:
     """The contexts with an accepted effect as their new base (and its refitted mechanics, if any)."""
     if c.refit is not None:
@@ -521,6 +554,9 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley)
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy)
+    rival = _rival(scorer, named, held_rms, accuracy)
+    if rival is not None:
+        named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain
     accepted = list(named[:1])
@@ -557,7 +593,10 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     structure = structured(verdict_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
-    if clock["flagged"]:
+    if rival is not None:
+        verdict, cause = "unexplained", None
+        confidence = float(min(1.0, max(0.0, 1.0 - rival.fit.heldout_ratio / max(rival.instead_of.heldout_ratio, 1e-9))))
+    elif clock["flagged"]:
         # the displacement is not periodic at the drive's frequency: whatever a catalogued extension gains on it,
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
         verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
@@ -587,6 +626,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
+    if rival is not None:
+        residual_where.insert(0, rival_detail(rival.report()))
     if recording["flagged"]:
         level = artefact_level(recording)  # the worst artefact over its threshold
         residual_where.insert(0, {"block": "recording", "level": level, "over_accuracy": level,
@@ -612,6 +653,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "clock": clock,
         "recording": recording,
+        # a distortion of the drive before the strip, which took the verdict from a named cause (rivals.py)
+        "drive_path": None if rival is None else rival.report(),
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},

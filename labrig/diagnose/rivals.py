@@ -1,0 +1,83 @@
+"""A rival outside the catalogue: the strip driven by a distorted copy of the drive the DAQ recorded.
+
+A drive amplifier's crossover dead zone or its clipping, with the DAQ recording the command (or the amplifier's input)
+rather than the voltage on the strip, distorts what the strip sees before any of its physics: the current and the
+displacement then both follow v_eff = g(v) through the linear model, i = Y(s) v_eff and d = H(s) v_eff, the same
+harmonics in both at the ratio Y(3 s)/Y(s) against H(3 s)/H(s). No catalogued cause does that: a faradaic branch in
+parallel distorts the current alone, a large deflection or a sensor nonlinearity the displacement alone, memory on
+the drive loops instead of mapping. The fresh12 set's class-B crossover (seen) was named ``faradaic_current``: an odd
+nonlinearity between the recorded drive and the current, which a faradaic branch in parallel also is.
+
+``drive_map`` is odd and static: g(v) = k (v - w z tanh(v/z) + c v^3), a dead zone of half-width z (depth w, 0 to 1:
+a smooth crossover) and a cubic (c < 0: soft clipping, c > 0: expansion), gain k. Sines by its describing function
+over one period of the recorded drive's fundamental (the 1st and 3rd harmonics), steps through the map at the record's
+own rate. ``rival_wins`` says when it takes the verdict from a named cause (docs/diagnosis.md, "A rival outside the
+catalogue").
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, specimen_for
+from labrig.diagnose.features import predict_step
+from labrig.physics import transfer
+
+_N = 64
+_COS = np.cos(2 * np.pi * np.arange(_N) / _N)
+
+
+def drive_map(v, th):
+    """g(v) = k (v - w z tanh(v/z) + c v^3) (module docstring)."""
+    z, w, c, k = th
+    v = np.asarray(v, float)
+    return k * (v - w * z * np.tanh(v / max(z, 1e-9)) + c * v**3)
+
+
+def _y3(ctx: Context) -> np.ndarray:
+    """The baseline admittance at three times each sine's frequency (once per context: it reads the specimens only)."""
+    hit = ctx.cache.get("rival_y3")
+    if hit is None:
+        hit = ctx.cache["rival_y3"] = np.array([transfer.admittance_tf(np.array([6j * np.pi * s.f]), specimen_for(ctx.specimens, s.pressure_kPa))[0]
+                                                for s in ctx.sines], complex)
+    return hit
+
+
+def distorted_drive(th, ctx: Context):
+    """The strip driven by ``drive_map`` of the recorded drive: both channels' fundamentals scaled by the map's gain at
+    each sine's amplitude, its 3rd harmonic passed through H(3 s) and Y(3 s), the steps re-driven."""
+    p = baseline(ctx)
+    if ctx.sines:
+        drv = np.array([_drive(s) for s in ctx.sines])
+        a = np.abs(drv)
+        ok = a > 0
+        c = np.fft.rfft(drive_map(a[:, None] * _COS[None, :], th), axis=1) * 2 / _N
+        c1, c3 = np.where(ok, c[:, 1].real, 1.0), c[:, 3].real
+        g1 = np.where(ok, c1 / np.where(ok, a, 1.0), 1.0)
+        turn = np.where(ok, drv / np.where(ok, a, 1.0), 1.0) ** 2
+        p.hd = p.hd.astype(complex)
+        p.hi = p.hi.astype(complex)
+        p.hd[:, 1] = p.hd[:, 1] + c3 / c1 * ctx.Hd3 / ctx.Hd * turn
+        p.hi[:, 1] = p.hi[:, 1] + c3 / c1 * _y3(ctx) / ctx.Hi * turn
+        p.Hd, p.Hi = p.Hd * g1, p.Hi * g1
+    for k, st in enumerate(ctx.steps):
+        p.step_d[k], p.step_i[k] = predict_step(specimen_for(ctx.specimens, st.pressure_kPa), st, drive_map(st.v_full, th))
+    return p
+
+
+DRIVE_PATH = Extension("drive_path", ("dead_zone_V", "depth", "cubic_per_V2", "gain"), (0.05, 0.5, 0.0, 1.0),
+                       (1e-3, 0.0, -0.5, 0.5), (0.5, 1.0, 0.5, 2.0), distorted_drive,
+                       "the strip driven by an odd static map of the recorded drive, k (v - w z tanh(v/z) + c v^3): an "
+                       "amplifier's crossover or clipping before the strip (outside the catalogue)", form="static_map")
+
+
+def rival_detail(r: dict) -> dict:
+    """The ``residual.where`` entry saying where the drive-path rival sits and what it took the verdict from (``r``:
+    the JSON's ``drive_path``)."""
+    z, w, c = (r["params"][k] for k in ("dead_zone_V", "depth", "cubic_per_V2"))
+    return {"block": "drive", "level": r["heldout_ratio"], "over_accuracy": r["its_ratio"] / max(r["heldout_ratio"], 1e-12),
+            "detail": f"the strip saw a distorted copy of the recorded drive (a dead zone of {1e3 * z:.1f} mV at depth {w:.2f}, "
+                      f"cubic {c:+.3f}/V^2: an amplifier's crossover or clipping before the strip): it predicts the held-out "
+                      f"half at {r['heldout_ratio']:.3f} of the baseline's error against {r['its_ratio']:.3f} for {r['instead_of']}, "
+                      f"and lowers {', '.join(r['blocks_it_lowers'])}, which {r['instead_of']} leaves where the baseline put it",
+            "blocks": list(r["blocks_it_lowers"])}
