@@ -137,7 +137,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh10": "fresh10 held-out set (diagnosed once unseen at 7041ed2; seen since)",
           "fresh11": "fresh11 held-out set (diagnosed once unseen at 3e229bf; seen since)",
           "fresh12": "fresh12 held-out set (diagnosed once unseen at 277c32f, the diagnosis as at 3e229bf; seen since)",
-          "fresh13": "fresh13 held-out set (unseen)"}
+          "fresh13": "fresh13 held-out set (diagnosed once unseen at 41aa7ca; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
