@@ -63,8 +63,8 @@ def _held(**levels):
 def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     """The named cause leaves a structured block where the base put it and the rival lowers it while predicting at
     least as well: the rival wins. The named cause moves every structured block, or the rival predicts worse, or it
-    lowers none of the untouched blocks: the named cause stands (and where nothing is untouched the rival is not even
-    fitted)."""
+    lowers none of the untouched blocks: the named cause stands (and where no harmonic block is untouched the rival
+    is not even fitted)."""
     base = {"frf_i": 5.0, "harm_i": 9.0, "harm_d": 4.0}
     acc = {"frf_i": 1.0, "harm_i": 1.0, "harm_d": 1.0}
     assert engine.block_rms(_held(harm_d=4.0))["harm_d"] == pytest.approx(4.0)
@@ -87,3 +87,6 @@ def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     fitted.clear()
     moves_all = _cand("faradaic_current", 0.25, _held(frf_i=1.0, harm_i=1.0, harm_d=1.0))
     assert engine._rival(scorer_with(rival), [moves_all], base, acc) is None and not fitted
+    # only a gain left where it was (no harmonic block untouched): nothing for a static map to claim, not fitted
+    leaves_gain = _cand("faradaic_current", 0.25, _held(frf_i=5.0, harm_i=1.0, harm_d=1.0))
+    assert engine._rival(scorer_with(rival), [leaves_gain], base, acc) is None and not fitted

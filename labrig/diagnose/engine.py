@@ -61,6 +61,7 @@ RATIO_FURTHER = 0.8
 # form happens to fit it (third pass: a form with a free current gain fitted 0 there). Not a threshold: a signature.
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
+HARMONIC_BLOCKS = frozenset({"harm_d", "harm_i"})
 # Families whose forms change these blocks only: where the base misses none of them, no form can lower the held-out
 # error (it is measured on the missed blocks), so only the catalogue's form is fitted, for the record (the mains'
 # harmonics form has 42 amplitudes: ~5 s of a session's fits for nothing)
@@ -498,11 +499,13 @@ def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], 
     """The drive-path rival (rivals.py) where it takes the verdict from the named cause: it is significant as an effect
     would be, predicts the held-out half at least as well, and lowers a structured block the named cause leaves where
     the base put it (the signature: a distorted drive reaches both channels, a catalogued cause only its own). Fitted
-    only where the named cause leaves such a block (the rule cannot hold otherwise)."""
+    only where the named cause leaves such a block, and a harmonic block among them: a static map shows first as the
+    distortion it adds to both channels, and what it does besides (a gain that changes with the amplitude) the
+    catalogued causes also do."""
     if not named or named[0].held is None:
         return None
     untouched = [k for k in _structured_blocks(base_rms, accuracy) if not _moves(named[0], k, base_rms[k])]
-    if not untouched:
+    if not set(untouched) & HARMONIC_BLOCKS:
         return None
     r = scorer.score_form(DRIVE_PATH.name, DRIVE_PATH)
     if not (r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and r.heldout_ratio <= named[0].heldout_ratio):
