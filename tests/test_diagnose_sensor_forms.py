@@ -1,5 +1,5 @@
-"""The sixteenth pass' forms (issue 12): the sensor's own low-pass and a station moving with the clamp's setting
-(labrig/diagnose/sensor_path.py), the rest curl drifting through the session (labrig/diagnose/arc.py)."""
+"""The sixteenth pass' forms (issue 12): the sensor's own low-pass (labrig/diagnose/sensor_path.py) and the rest curl
+drifting through the session (labrig/diagnose/arc.py)."""
 
 from types import SimpleNamespace
 
@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from labrig.diagnose.arc import curled_arc, drifting_arc
-from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
-from labrig.diagnose.sensor_path import lowpass, lowpass_tf, station
-from labrig.physics import presets, timeresp, transfer
+from labrig.diagnose.catalogue import Context, frf_by_pressure
+from labrig.diagnose.sensor_path import lowpass, lowpass_tf
+from labrig.physics import presets, timeresp
 
 PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)
 
@@ -52,23 +52,6 @@ def test_the_lowpass_spans_the_lag_and_the_delay_and_is_causal():
     f = np.array([sn.f for sn in ctx.sines])
     np.testing.assert_allclose(p.Hd / ctx.Hd, lowpass_tf(2j * np.pi * f, tau, 2.5), rtol=1e-12)
     np.testing.assert_allclose(lowpass(np.array([0.0, 2.5]), ctx).Hd, ctx.Hd)
-
-
-def test_the_station_moves_with_the_clamp_pressure_and_is_the_beam_when_it_does_not():
-    """x_m linear in the pressure over the session's range: equal ends read as the beam form at that x_m; otherwise the
-    lowest pressure reads at its own x_m, the highest at its own, one in between at the interpolated one; past 1 the
-    spot reads a rigid flag beyond the tip."""
-    ctx = _context()
-    L = ctx.length
-    np.testing.assert_allclose(station(np.array([0.8, 0.8]), ctx).Hd, sensor_read(ctx, sensor_x=0.8 * L).Hd, rtol=1e-12)
-    moving = station(np.array([1.0, 0.7]), ctx).Hd
-    for k, sn in enumerate(ctx.sines):
-        u = (sn.pressure_kPa - PRESSURES[0]) / (PRESSURES[-1] - PRESSURES[0])
-        sp = ctx.specimens[sn.pressure_kPa].with_(sensor_x=(1.0 - 0.3 * u) * L)
-        assert moving[k] == pytest.approx(transfer.frf(np.array([sn.f]), sp)[0], rel=1e-12)
-    assert abs(moving[-1]) < 0.7 * abs(ctx.Hd[-1])  # read inboard at the top pressure: less of the tip's motion
-    flag = station(np.array([1.1, 1.1]), ctx).Hd
-    np.testing.assert_allclose(flag, sensor_read(ctx, sensor_lever=0.1 * L).Hd, rtol=1e-12)
 
 
 def test_the_drifting_curl_is_the_curled_arc_read_at_each_records_moment():

@@ -239,13 +239,8 @@ def _time_delay(th, ctx):
 def sensor_read(ctx: Context, **changes) -> Prediction:
     """The baseline with the displacement read elsewhere: every specimen ``with_(**changes)`` (the spot's position,
     a flag's lever), the sine FRF and the steps predicted again."""
-    return read_at(ctx, {q: sp.with_(**changes) for q, sp in ctx.specimens.items()})
-
-
-def read_at(ctx: Context, at: dict[float, Specimen]) -> Prediction:
-    """The baseline with each pressure's displacement read on its own specimen of ``at`` (the sensor's station set
-    per pressure): the sine FRF and the steps predicted again."""
     p = baseline(ctx)
+    at = {q: sp.with_(**changes) for q, sp in ctx.specimens.items()}
     p.Hd = frf_by_pressure(ctx.sines, at)
     for k, st in enumerate(ctx.steps):
         p.step_d[k] = predict_step(specimen_for(at, st.pressure_kPa), st)[0]

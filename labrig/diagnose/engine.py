@@ -319,8 +319,6 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([1e-4, 0.45, 0.04, 3.0, 3.0, 0.05])]  # a reduction wave at +-E_half (the first start: a couple at 0 V)
     if ext.form == "lowpass":
         starts += [np.array([0.03, 6.0])]  # a longer filter of more poles, towards the delay
-    if ext.form == "station":
-        starts += [np.array([1.0, 0.75]), np.array([0.75, 1.0])]  # the station moving inboard or outboard
     if ext.form == "static_map":
         starts += [np.array([0.02, 1.0, 0.0, 1.0]), np.array([0.1, 0.0, -0.2, 1.0])]  # a narrow deep dead zone; clipping
     if ext.form == "pi_output":

@@ -30,7 +30,7 @@ from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _p
 from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
-from labrig.diagnose.sensor_path import lowpass, station
+from labrig.diagnose.sensor_path import lowpass
 from labrig.physics import timeresp
 
 _N = 64
@@ -437,9 +437,6 @@ FAMILIES["time_delay"] += [
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
           "a rigid flag at the tip read lever e beyond it, w(L) + e w'(L) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
-    _form("sensor_offset", "station", ("x_low_over_L", "x_high_over_L"), (0.9, 0.9), (0.3, 0.3), (1.5, 1.5), station,
-          "the spot's station moving with the clamp's setting, x_m linear in the pressure from the lowest to the highest "
-          "(beyond 1: a flag past the tip): a laser on the clamp's frame or jaw", refit_mechanics=True),
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
