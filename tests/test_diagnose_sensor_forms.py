@@ -1,4 +1,4 @@
-"""The sixteenth pass' forms (issue 12): the sensor's own low-pass (labrig/diagnose/sensor_path.py) and the rest curl
+"""The sixteenth pass' forms (issue 12): the sensor's own low-pass (labrig/diagnose/families.py) and the rest curl
 drifting through the session (labrig/diagnose/arc.py)."""
 
 from types import SimpleNamespace
@@ -8,7 +8,7 @@ import pytest
 
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.catalogue import Context, frf_by_pressure
-from labrig.diagnose.sensor_path import lowpass, lowpass_tf
+from labrig.diagnose.families import lowpass, lowpass_tf
 from labrig.physics import presets, timeresp
 
 PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context, _drive, baseline
+from labrig.diagnose.catalogue import Context, Prediction, _drive, baseline
 
 _GRID = 32  # samples per cycle for the describing function (harmonics to 3f: far above what they need)
 
@@ -32,27 +32,43 @@ def _f(x: np.ndarray) -> np.ndarray:
     return np.where(small, x / 2 - x**3 / 24, (1 - np.cos(xs)) / xs)
 
 
-def _df(x: float) -> float:
+def _df(x) -> np.ndarray:
     """f'(x) = (x sin x - (1 - cos x))/x^2, 1/2 at 0."""
-    if abs(x) < 1e-3:
-        return 0.5 - x**2 / 8
-    return float((x * np.sin(x) - (1 - np.cos(x))) / x**2)
+    x = np.asarray(x, float)
+    small = np.abs(x) < 1e-3
+    xs = np.where(small, 1.0, x)
+    return np.where(small, 0.5 - x**2 / 8, (xs * np.sin(xs) - (1 - np.cos(xs))) / xs**2)
 
 
-def curled_reading(d: np.ndarray, theta0: float, ell: float) -> np.ndarray:
-    """y(d) of the module's docstring: the height read off the curled arc, unit slope at d = 0."""
-    return ell * (_f(theta0 + 2 * np.asarray(d, float) / ell) - _f(np.array(theta0))) / (2 * _df(theta0))
+def curled_reading(d: np.ndarray, theta0, ell: float) -> np.ndarray:
+    """y(d) of the module's docstring: the height read off the curled arc, unit slope at d = 0 (theta0 a number, or
+    an array broadcasting against d)."""
+    return ell * (_f(theta0 + 2 * np.asarray(d, float) / ell) - _f(np.asarray(theta0, float))) / (2 * _df(theta0))
 
 
 def curled_arc(th, ctx: Context):
     """The baseline read through ``curled_reading``: theta0 (rad, the curl's side by its sign) and the effective
     length's factor lambda (l = lambda L)."""
     theta0, lam = th
-    ell = lam * ctx.length
+    return _read_curled(ctx, lam * ctx.length, lambda t: theta0)
+
+
+def drifting_arc(th, ctx: Context):
+    """``curled_arc`` with the rest curl changing through the session, theta0 = theta_a + (theta_b - theta_a) u, u the
+    record's start as a share of the session's span: a strip that curls as it dries or takes a set, or a mount that
+    tilts. Each record read at its own theta0."""
+    theta_a, theta_b, lam = th
+    return _read_curled(ctx, lam * ctx.length, lambda t: theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(t)))
+
+
+def _read_curled(ctx: Context, ell: float, theta_at) -> Prediction:
+    """The baseline read off an arc of effective length ell curled at theta_at(t_start) for each record: sines by the
+    map's describing function at their amplitude, steps through the map."""
     p = baseline(ctx)
     if ctx.sines:
         a1 = p.Hd * np.array([_drive(s) for s in ctx.sines])
         amp, phase = np.abs(a1), np.exp(1j * np.angle(a1))
+        theta0 = np.array([theta_at(s.t_start) for s in ctx.sines], float)[:, None]
         wt = 2 * np.pi * np.arange(_GRID) / _GRID
         y = curled_reading(amp[:, None] * np.cos(wt)[None, :], theta0, ell)
         c = 2 * np.fft.rfft(y, axis=1)[:, 1:4].real / _GRID  # an even function of wt: cosine coefficients only
@@ -62,32 +78,6 @@ def curled_arc(th, ctx: Context):
         p.hd[:, 0] = p.hd[:, 0] + c[:, 1] / c1 * phase
         p.hd[:, 1] = p.hd[:, 1] + c[:, 2] / c1 * phase**2
         p.Hd = p.Hd * g
-    for k, d in enumerate(p.step_d):
-        p.step_d[k] = curled_reading(d, theta0, ell)
-    return p
-
-
-def drifting_arc(th, ctx: Context):
-    """``curled_arc`` with the rest curl changing through the session, theta0 = theta_a + (theta_b - theta_a) u, u the
-    record's start as a share of the session's span: a strip that curls as it dries or takes a set, or a mount that
-    tilts. Each record read at its own theta0 (sines by the describing function, steps through the map)."""
-    theta_a, theta_b, lam = th
-    ell = lam * ctx.length
-    p = baseline(ctx)
-    wt = 2 * np.pi * np.arange(_GRID) / _GRID
-    p.hd = p.hd.astype(complex)
-    for k, s in enumerate(ctx.sines):
-        theta0 = theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(s.t_start))
-        a1 = p.Hd[k] * _drive(s)
-        amp, phase = abs(a1), np.exp(1j * np.angle(a1))
-        if amp <= 0:
-            continue
-        c = 2 * np.fft.rfft(curled_reading(amp * np.cos(wt), theta0, ell))[1:4].real / _GRID
-        c1 = c[0] if c[0] != 0 else 1.0
-        p.hd[k, 0] += c[1] / c1 * phase
-        p.hd[k, 1] += c[2] / c1 * phase**2
-        p.Hd[k] *= c1 / amp
     for k, (st, d) in enumerate(zip(ctx.steps, p.step_d)):
-        theta0 = theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(st.t_start))
-        p.step_d[k] = curled_reading(d, theta0, ell)
+        p.step_d[k] = curled_reading(d, theta_at(st.t_start), ell)
     return p

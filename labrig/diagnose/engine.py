@@ -556,6 +556,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy)
     rival = _rival(scorer, named, held_rms, accuracy)
+    drive_path = None if rival is None else rival.report()
     if rival is not None:
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
@@ -628,7 +629,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
     if rival is not None:
-        residual_where.insert(0, rival_detail(rival.report()))
+        residual_where.insert(0, rival_detail(drive_path))
     if recording["flagged"]:
         level = artefact_level(recording)  # the worst artefact over its threshold
         residual_where.insert(0, {"block": "recording", "level": level, "over_accuracy": level,
@@ -655,7 +656,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         "clock": clock,
         "recording": recording,
         # a distortion of the drive before the strip, which took the verdict from a named cause (rivals.py)
-        "drive_path": None if rival is None else rival.report(),
+        "drive_path": drive_path,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},

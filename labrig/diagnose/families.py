@@ -30,7 +30,6 @@ from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _p
 from labrig.diagnose import slow_forms as slow
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
-from labrig.diagnose.sensor_path import lowpass
 from labrig.physics import timeresp
 
 _N = 64
@@ -65,6 +64,19 @@ def _cole_cole(s, th):
 def _pair(s, th):
     k2, t1, t2, w = th
     return 1.0 - k2 * (w / (t1 * s + 1.0) + (1.0 - w) / (t2 * s + 1.0))
+
+
+def lowpass_tf(s, tau: float, order: float):
+    """(1 + s tau/n)^-n: unit gain at DC, group delay tau there; the time delay's ``lowpass`` form reads the
+    displacement through it. n = 1 is the first-order lag; as n grows it tends to the pure delay exp(-s tau), since
+    (1 + x/n)^-n -> e^-x. Between them it stands for a sensor's averaging, servo or anti-alias filter of a few poles
+    (a boxcar over T has the phase of a delay T/2; a Bessel or critically damped filter of order n is this shape). On
+    the imaginary axis it is the principal power of a number of positive real part, analytic in the right half plane:
+    the step's response through it is causal."""
+    return (1.0 + np.asarray(s, complex) * tau / order) ** (-order)
+
+
+lowpass = _relax(lambda s, th: lowpass_tf(s, *th))
 
 
 # ------------------------------------------------------------------------------------------ faradaic branches

@@ -11,7 +11,7 @@ nonlinearity between the recorded drive and the current, which a faradaic branch
 ``drive_map`` is odd and static: g(v) = k (v - w z tanh(v/z) + c v^3), a dead zone of half-width z (depth w, 0 to 1:
 a smooth crossover) and a cubic (c < 0: soft clipping, c > 0: expansion), gain k. Sines by its describing function
 over one period of the recorded drive's fundamental (the 1st and 3rd harmonics), steps through the map at the record's
-own rate. ``rival_wins`` says when it takes the verdict from a named cause (docs/diagnosis.md, "A rival outside the
+own rate. ``engine._rival`` says when it takes the verdict from a named cause (docs/diagnosis.md, "A rival outside the
 catalogue").
 """
 
