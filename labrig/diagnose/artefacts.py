@@ -52,6 +52,7 @@ import numpy as np
 from scipy.ndimage import median_filter
 
 from labrig.diagnose import spells
+from labrig.diagnose.clipping import CLIP_RUN, UNITS, clipping
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
@@ -349,14 +350,16 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["spells"] = _timed(per, "spell", spells.SPELL_POWER)
     out["shifts"] = _timed(per, "shift", spells.SHIFT_Z)
     out["spell_power"], out["shift_z"] = spells.SPELL_POWER, spells.SHIFT_Z
+    out["clipped"] = clipping(sd, MIN_RECORDS)
     out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
-                          or out["spells"]["flagged"] or out["shifts"]["flagged"])
+                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "wander": max(wander, default=0.0),
                   "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0),
-                  "spell": _second(per, "spell"), "shift": _second(per, "shift")}
+                  "spell": _second(per, "spell"), "shift": _second(per, "shift"),
+                  "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0}
     return out
 
 
@@ -372,12 +375,19 @@ def level(a: dict[str, Any]) -> float:
     flagged kind)."""
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
-                     m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z))
+                     m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
+                     m.get("clip_run", 0) / CLIP_RUN))
 
 
 def detail(a: dict[str, Any]) -> str:
     """One line for the report and the JSON's ``residual.where``: what the recording shows and where."""
     parts = []
+    if a.get("clipped", {}).get("flagged"):
+        c = a["clipped"]
+        parts.append("; ".join(f"the {ch} reading held at {', '.join(f'{x:g} {UNITS[ch]}' for x in c['levels'][ch][:4])} (the end of its range) in "
+                               f"{len(c['records'][ch])} records ({', '.join(c['records'][ch][:4])}{', ...' if len(c['records'][ch]) > 4 else ''})"
+                               for ch in c["channels"])
+                     + f", up to {c['longest_run']} readings in a row: a clipped channel, whose features are not the signal")
     if a["bursts"]["flagged"]:
         b = a["bursts"]
         parts.append(f"the {' and '.join(b['channels'])} reading leaves its signal for {BURST_RUN}+ samples ({b['runs']} times in "

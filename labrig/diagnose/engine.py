@@ -603,6 +603,11 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
         verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
         named, accepted = [], []
+    elif recording["clipped"]["flagged"]:
+        # a channel held at the end of its range: the features read there are the converter's, not the strip's, and a
+        # cause named from them would be named from the clipping (clipping.py)
+        verdict, cause, confidence = "unexplained", None, 1.0
+        named, accepted = [], []
     elif named:
         verdict, cause = "effect", named[0].name
         second = named[1].heldout_ratio if len(named) > 1 else 1.0

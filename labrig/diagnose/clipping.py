@@ -1,0 +1,87 @@
+"""Readings held at the end of their range: a channel that clips.
+
+A converter or a sensor driven past its range returns its last code for as long as the signal stays beyond it: the
+drive's monitor on a DAQ range a little smaller than the amplifier's output, a current amplifier that saturates, a
+laser whose target leaves its measuring range. The record then sits at its largest (or smallest) value for a run of
+samples, the same code each, while everywhere else the reading moves with its noise. The diagnosis' features take the
+flattened tops for the signal (a clipped monitor records less drive than the strip got; a clipped sensor less
+response), so a cause named from them would be named from the clipping.
+
+The test, per record and channel (drive, current, displacement; every kind of record), at the end of the range where
+the readings pile up: the same value ``CLIP_RUN`` times in a row or more, ``PILE`` times as many readings there as at
+the next value inward (a histogram's spike at its edge: a smooth top, a sine's arcsine law, puts about twice the next
+value's count there), and a channel that moves with its noise elsewhere (``MOVING`` of its readings differ from the one
+before: a noise-free setpoint stored as the drive, flat on its plateau, is no clipped measurement). Flagged in
+``MIN_RECORDS`` records or more (artefacts.py), on one channel.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from labrig.estimate.session_data import SessionData, TimeRecord
+
+# Set on the tuning set: a smooth signal's top, where the code is coarser than the noise, held one value for at most
+# 7 readings in a row and 7 times the next value's count on any record of its 40 sessions (the held-out sets fresh12 and
+# fresh13: at most 6); a clipped drive monitor held 78-15000 in a row, thousands of times the next value's count
+CLIP_RUN = 20  # readings in a row at the record's extreme
+PILE = 20.0  # readings at the extreme over readings at the next value inward
+MOVING = 0.2  # the share of readings away from the extremes that differ from the one before: a measured, noisy channel
+CHANNELS = {"drive": "v", "current": "i", "displacement": "d"}
+UNITS = {"drive": "V", "current": "A", "displacement": "m"}
+MIN_SAMPLES = 50
+
+
+def longest_run(mask: np.ndarray) -> int:
+    """The longest run of True."""
+    if not mask.any():
+        return 0
+    edges = np.flatnonzero(np.diff(np.r_[0, mask.astype(np.int8), 0]))
+    return int(np.max(edges[1::2] - edges[0::2]))
+
+
+def channel_clip(x: np.ndarray) -> dict[str, Any] | None:
+    """At the end of the range where the reading piles up most: the longest run there, the readings there over those
+    at the next value inward (``pile``), and the share of readings elsewhere that differ from the one before
+    (``moving``); None if the channel is too short or constant."""
+    x = x[np.isfinite(x)]
+    if x.size < MIN_SAMPLES or np.ptp(x) == 0:
+        return None
+    values, counts = np.unique(x, return_counts=True)
+    best: dict[str, Any] = {"run": 0}
+    held = np.zeros(x.size, bool)
+    for k, inward in ((len(values) - 1, len(values) - 2), (0, 1)):
+        at = x == values[k]
+        held |= at
+        run = longest_run(at)
+        if run > best["run"]:
+            best = {"run": run, "level": float(values[k]), "pile": float(counts[k] / max(counts[inward], 1)), "share": float(counts[k] / x.size)}
+    free = ~(held[:-1] | held[1:])
+    moving = float(np.mean(np.diff(x)[free] != 0)) if free.sum() >= MIN_SAMPLES else 0.0
+    return {**best, "moving": moving, "clipped": best["run"] >= CLIP_RUN and best["pile"] >= PILE and moving >= MOVING}
+
+
+def record_clips(r: TimeRecord) -> dict[str, dict[str, Any]]:
+    """The channels of one record that clip (channel -> its ``channel_clip``)."""
+    out = {}
+    for ch, attr in CHANNELS.items():
+        c = channel_clip(np.asarray(getattr(r, attr), float))
+        if c is not None and c["clipped"]:
+            out[ch] = {**c, "record": r.name, "kind": r.kind}
+    return out
+
+
+def clipping(sd: SessionData, min_records: int) -> dict[str, Any]:
+    """Per channel, the records that clip, the level and the longest run; flagged where one channel clips in
+    ``min_records`` records or more."""
+    per: dict[str, list[dict[str, Any]]] = {}
+    for r in sd.all_records():
+        for ch, c in record_clips(r).items():
+            per.setdefault(ch, []).append(c)
+    flagged = sorted(ch for ch, v in per.items() if len(v) >= min_records)
+    return {"channels": flagged, "records": {ch: [c["record"] for c in v] for ch, v in per.items()},
+            "levels": {ch: sorted({float(f"{c['level']:.4g}") for c in v}) for ch, v in per.items()},
+            "longest_run": max((c["run"] for v in per.values() for c in v), default=0),
+            "clip_run": CLIP_RUN, "pile": PILE, "flagged": bool(flagged)}
