@@ -26,6 +26,7 @@ from labrig.diagnose.features import Features, extract, predict_sines, predict_s
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
+from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
@@ -593,6 +594,10 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
             verdict_held, verdict_ctx, refitted = ref_held, ref.ctx_held, ref.params()
     verdict_rms = block_rms(verdict_held)
     structure = structured(verdict_rms, accuracy)  # blocks beyond the session's noise and the attainable accuracy
+    # a moment of a step record the whole record's RMS dilutes (step_windows.py)
+    step_window = step_windows([ctx_fit] if same else [ctx_fit, verdict_ctx])
+    if step_window is not None and step_window["level"] > STRUCTURE_MARGIN:
+        structure["step_window"] = step_window["level"]
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
     if rival is not None:
@@ -629,6 +634,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     if accepted and adopted < len(accepted):
         cf, ch = _adopt(accepted[-1], cf, ch)
     residual_where = locate_misses(blocks(baseline(ch), ch), ch, accuracy) if accepted else locate_misses(verdict_held, verdict_ctx, accuracy)
+    if step_window is not None and step_window["level"] > 1.0 and not accepted:
+        residual_where = sorted([*residual_where, step_window_entry(step_window, STRUCTURE_MARGIN)], key=lambda w: -w["over_accuracy"])
     if clock["flagged"]:
         residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
@@ -655,7 +662,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
                      "clean_accuracy": {k: CLEAN_ACCURACY[k] for k in held_rms if k in CLEAN_ACCURACY},
                      "accuracy": {k: accuracy[k] for k in held_rms}, "noise_level": noise_levels(ctx_held),
                      # the loose parameters refitted within their uncertainty, where that is the verdict's baseline
-                     "refitted": None if refitted is None else {"params": refitted, "blocks": verdict_rms}},
+                     "refitted": None if refitted is None else {"params": refitted, "blocks": verdict_rms},
+                     "step_window": step_window},
         "extended": {"name": best.name, "form": best.form, "form_describe": best.ext.describe if best.ext else "",
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "clock": clock,
