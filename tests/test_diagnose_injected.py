@@ -2,12 +2,16 @@
 validation set's injector (bench/inject.py), imported and diagnosed as a user would. The whole validation set
 (every form x three seeds, structures outside the catalogue, protocol variants) is run by bench/diagnose.py, and the
 issue's further probes (an exponential electrolysis branch, hum on the drive monitor) by bench/diagnose_probes.py;
-here the structure outside the catalogue, on the suite's clean seed-1 sweep."""
+here, on the suite's clean seed-1 sweep exported once: the structure outside the catalogue, a moment of the step
+records the whole record's RMS dilutes (step_windows.py), and a drive monitor that clips (clipping.py)."""
+
+import json
 
 import numpy as np
 import pytest
 
 from bench import diagnose_probes as probes
+from bench import inject
 from labrig.cli import main
 
 BENCH_CASES = [("none", 1)]  # shared with test_fit and the coverage (conftest)
@@ -51,3 +55,34 @@ def test_a_moment_of_the_step_the_record_dilutes_is_unexplained_and_located(expo
     # the worst window holds the drag's first 0.25 s after the fall (the suite's steps: 1 s before the edge, 30 s on)
     assert 30.7 <= sw["worst_time_s"] <= 31.2, top
     assert 0.005 < sw["share"] < 0.03  # the drag is 3 % at the fall and decays in 0.1 s: the window's RMS holds part of it
+
+
+CODE = 2.0 / 65536  # a 16-bit converter on +-1 V
+
+
+def clip_monitor(s: inject.Session) -> None:
+    """The drive amplifier 4 % high into the strip, its output monitored on a DAQ range ending at 1.01 V: the strip's
+    signals are 1.04 of the commanded drive's, and the recorded drive is right except where it passes the range's end
+    (the 1 V records' plateaus and tops)."""
+    for r in s.series():
+        r.cols["i_A"], r.cols["disp_m"] = 1.04 * r.cols["i_A"], 1.04 * r.cols["disp_m"]
+        r.cols["v_V"] = np.round(np.clip(1.04 * r.cols["v_V"], -1.01, 1.01) / CODE) * CODE
+
+
+def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_path, capsys):
+    """labrig/diagnose/clipping.py end to end, from the command line (its test on synthetic readings:
+    tests/test_diagnose_clipping.py)."""
+    s = inject.read_export(exported / "clean", "paper")
+    clip_monitor(s)
+    h5 = tmp_path / "clipped.h5"
+    assert main(["import", str(inject.write_import(s, tmp_path / "clipped")), "--out", str(h5)]) == 0
+    capsys.readouterr()
+    assert main(["diagnose", str(h5), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    out = out[0] if isinstance(out, list) else out
+    assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
+    clipped = out["recording"]["clipped"]
+    assert clipped["flagged"] and clipped["channels"] == ["drive"]
+    assert all("1V" in name for name in clipped["records"]["drive"])  # the 1 V records only: the 0.5 V ones stay inside
+    top = out["residual"]["where"][0]
+    assert top["block"] == "recording" and "drive reading held at -1.01 V, 1.01 V" in top["detail"]
