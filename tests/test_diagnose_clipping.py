@@ -24,9 +24,10 @@ def test_a_clipped_sine_and_a_clipped_plateau_are_found(rng):
     t = np.arange(6000) / 60.0  # a 0.1 Hz sine at 60 samples a second, ten cycles
     sine = _read(1.04 * np.sin(2 * np.pi * 0.1 * t), 2e-4, rng, top=1.0)
     c = channel_clip(sine)
-    assert c["clipped"] and c["run"] >= CLIP_RUN and c["level"] == pytest.approx(1.0, abs=CODE)
+    assert c["clipped"] and c["run"] >= CLIP_RUN and c["levels"] == pytest.approx([1.0, -1.0], abs=CODE)  # both ends held
     step = _read(np.where(np.arange(30000) >= 15000, 1.03, 0.0), 2e-4, rng, top=1.0)
-    assert channel_clip(step)["clipped"]
+    c = channel_clip(step)
+    assert c["clipped"] and c["levels"] == pytest.approx([1.0], abs=CODE)  # the plateau's end only: the rest sits at 0 V
 
 
 def test_smooth_tops_noise_and_setpoints_are_not_clipping(rng):

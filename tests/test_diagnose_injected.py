@@ -73,6 +73,7 @@ def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_pat
     """labrig/diagnose/clipping.py end to end, from the command line (its test on synthetic readings:
     tests/test_diagnose_clipping.py)."""
     s = inject.read_export(exported / "clean", "paper")
+    inject.v_two_pressures(s)  # two of the four pressures: the verdict needs no more, and the fits take half the time
     clip_monitor(s)
     h5 = tmp_path / "clipped.h5"
     assert main(["import", str(inject.write_import(s, tmp_path / "clipped")), "--out", str(h5)]) == 0
@@ -83,6 +84,7 @@ def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_pat
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
     clipped = out["recording"]["clipped"]
     assert clipped["flagged"] and clipped["channels"] == ["drive"]
-    assert all("1V" in name for name in clipped["records"]["drive"])  # the 1 V records only: the 0.5 V ones stay inside
+    assert len(clipped["records"]["drive"]) == 4  # the 1 V step and harmonic at each pressure: the 0.5 V sines stay inside
+    assert all("1V" in name for name in clipped["records"]["drive"])
     top = out["residual"]["where"][0]
-    assert top["block"] == "recording" and "drive reading held at -1.01 V, 1.01 V" in top["detail"]
+    assert top["block"] == "recording" and "drive reading held at -1.01 V, 1.01 V" in top["detail"]  # the tops and troughs

@@ -43,24 +43,24 @@ def longest_run(mask: np.ndarray) -> int:
 
 
 def channel_clip(x: np.ndarray) -> dict[str, Any] | None:
-    """At the end of the range where the reading piles up most: the longest run there, the readings there over those
-    at the next value inward (``pile``), and the share of readings elsewhere that differ from the one before
-    (``moving``); None if the channel is too short or constant."""
+    """At either end of the range: the longest run of the extreme value, the readings there over those at the next
+    value inward (``pile``); the share of readings elsewhere that differ from the one before (``moving``); the ends
+    that clip (``levels``) and, for the end with the longer run, its run, level and pile; None if the channel is too
+    short or constant."""
     x = x[np.isfinite(x)]
     if x.size < MIN_SAMPLES or np.ptp(x) == 0:
         return None
     values, counts = np.unique(x, return_counts=True)
-    best: dict[str, Any] = {"run": 0}
-    held = np.zeros(x.size, bool)
+    ends, held = [], np.zeros(x.size, bool)
     for k, inward in ((len(values) - 1, len(values) - 2), (0, 1)):
         at = x == values[k]
         held |= at
-        run = longest_run(at)
-        if run > best["run"]:
-            best = {"run": run, "level": float(values[k]), "pile": float(counts[k] / max(counts[inward], 1)), "share": float(counts[k] / x.size)}
+        ends.append({"run": longest_run(at), "level": float(values[k]), "pile": float(counts[k] / max(counts[inward], 1))})
     free = ~(held[:-1] | held[1:])
     moving = float(np.mean(np.diff(x)[free] != 0)) if free.sum() >= MIN_SAMPLES else 0.0
-    return {**best, "moving": moving, "clipped": best["run"] >= CLIP_RUN and best["pile"] >= PILE and moving >= MOVING}
+    clipped = [e for e in ends if e["run"] >= CLIP_RUN and e["pile"] >= PILE and moving >= MOVING]
+    worst = max(ends, key=lambda e: e["run"])
+    return {**worst, "levels": [e["level"] for e in clipped], "moving": moving, "clipped": bool(clipped)}
 
 
 def record_clips(r: TimeRecord) -> dict[str, dict[str, Any]]:
@@ -82,6 +82,6 @@ def clipping(sd: SessionData, min_records: int) -> dict[str, Any]:
             per.setdefault(ch, []).append(c)
     flagged = sorted(ch for ch, v in per.items() if len(v) >= min_records)
     return {"channels": flagged, "records": {ch: [c["record"] for c in v] for ch, v in per.items()},
-            "levels": {ch: sorted({float(f"{c['level']:.4g}") for c in v}) for ch, v in per.items()},
+            "levels": {ch: sorted({float(f"{x:.4g}") for c in v for x in c["levels"]}) for ch, v in per.items()},
             "longest_run": max((c["run"] for v in per.values() for c in v), default=0),
             "clip_run": CLIP_RUN, "pile": PILE, "flagged": bool(flagged)}
