@@ -84,7 +84,9 @@ def _gamma_lag(fn, f: float) -> float:
     """The drive-side operator's phase lag (rad) behind a 0.5 V sine at f, over the record's second half (its loop's
     width: a lag at the fundamental is a loop's area)."""
     fs = max(50.0 * f, 20.0)
-    ses = _sine_session(f, dur=max(4.0 / f, 40.0), fs=fs)
+    # at least 40 s (the slowest population's 20 s settle), and 2000 cycles at the most (a fast drive's loop is
+    # steady within a few: 4 s at 500 Hz, where 40 s cost 8 s of the suite's CPU on the sample-by-sample relays)
+    ses = _sine_session(f, dur=max(4.0 / f, min(40.0, 2000.0 / f)), fs=fs)
     v = ses.recs[0].cols["v_V"]
     captured = {}
     keep = f12._drive_side
