@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context, Prediction, _drive, baseline
+from labrig.diagnose.catalogue import Context, Prediction, _drive, baseline, cosine_harmonics
 
 _GRID = 32  # samples per cycle for the describing function (harmonics to 3f: far above what they need)
 
@@ -69,9 +69,7 @@ def _read_curled(ctx: Context, ell: float, theta_at) -> Prediction:
         a1 = p.Hd * np.array([_drive(s) for s in ctx.sines])
         amp, phase = np.abs(a1), np.exp(1j * np.angle(a1))
         theta0 = np.array([theta_at(s.t_start) for s in ctx.sines], float)[:, None]
-        wt = 2 * np.pi * np.arange(_GRID) / _GRID
-        y = curled_reading(amp[:, None] * np.cos(wt)[None, :], theta0, ell)
-        c = 2 * np.fft.rfft(y, axis=1)[:, 1:4].real / _GRID  # an even function of wt: cosine coefficients only
+        c = cosine_harmonics(lambda x: curled_reading(x, theta0, ell), amp, _GRID)
         c1 = np.where(np.abs(c[:, 0]) > 0, c[:, 0], 1.0)
         g = np.where(amp > 0, c1 / np.where(amp > 0, amp, 1.0), 1.0)
         p.hd = p.hd.astype(complex)

@@ -52,7 +52,7 @@ import numpy as np
 from scipy.ndimage import median_filter
 
 from labrig.diagnose import spells
-from labrig.diagnose.clipping import CLIP_RUN, UNITS, clipping
+from labrig.diagnose.clipping import CLIP_RUN, UNITS, clipping, run_lengths
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
@@ -155,9 +155,7 @@ def _bursts(e: np.ndarray, quantum: float) -> tuple[int, int, float]:
     worst z is the largest level that ``BURST_RUN`` samples in a row all exceed (the margin a clean record leaves)."""
     sigma = max(robust_sigma(e), quantum / math.sqrt(12.0), 1e-300)
     z = np.abs(e - np.median(e)) / sigma
-    hot = np.concatenate([[False], z > BURST_Z, [False]]).astype(np.int8)
-    edges = np.flatnonzero(np.diff(hot))
-    lengths = edges[1::2] - edges[0::2]
+    lengths = run_lengths(z > BURST_Z)
     runs = lengths >= BURST_RUN
     held = np.lib.stride_tricks.sliding_window_view(z, BURST_RUN).min(axis=1) if z.size >= BURST_RUN else z
     return int(runs.sum()), int(lengths.max(initial=0)), float(held.max(initial=0.0))

@@ -111,6 +111,14 @@ def _drive(s: SineFeature) -> complex:
     return complex(s.est.drive[0])
 
 
+def cosine_harmonics(fun, amp: np.ndarray, n: int) -> np.ndarray:
+    """The cosine coefficients of harmonics 1-3 of a static map driven by a cosine, fun(a cos wt) over one cycle
+    sampled at n points, a row per amplitude of ``amp`` (a describing function; an odd or even map has no sine
+    terms)."""
+    wt = 2 * np.pi * np.arange(n) / n
+    return 2 * np.fft.rfft(fun(np.asarray(amp)[:, None] * np.cos(wt)[None, :]), axis=1)[:, 1:4].real / n
+
+
 # ------------------------------------------------------------------------------------------------ effects
 
 

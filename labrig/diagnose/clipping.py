@@ -34,12 +34,15 @@ UNITS = {"drive": "V", "current": "A", "displacement": "m"}
 MIN_SAMPLES = 50
 
 
+def run_lengths(mask: np.ndarray) -> np.ndarray:
+    """The lengths of the runs of True, in order."""
+    edges = np.flatnonzero(np.diff(np.r_[0, np.asarray(mask).astype(np.int8), 0]))
+    return edges[1::2] - edges[0::2]
+
+
 def longest_run(mask: np.ndarray) -> int:
-    """The longest run of True."""
-    if not mask.any():
-        return 0
-    edges = np.flatnonzero(np.diff(np.r_[0, mask.astype(np.int8), 0]))
-    return int(np.max(edges[1::2] - edges[0::2]))
+    """The longest run of True (0 for none)."""
+    return int(run_lengths(mask).max(initial=0))
 
 
 def channel_clip(x: np.ndarray) -> dict[str, Any] | None:
@@ -69,7 +72,7 @@ def record_clips(r: TimeRecord) -> dict[str, dict[str, Any]]:
     for ch, attr in CHANNELS.items():
         c = channel_clip(np.asarray(getattr(r, attr), float))
         if c is not None and c["clipped"]:
-            out[ch] = {**c, "record": r.name, "kind": r.kind}
+            out[ch] = {**c, "record": r.name}
     return out
 
 

@@ -19,12 +19,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, specimen_for
+from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, cosine_harmonics, specimen_for
 from labrig.diagnose.features import predict_step
 from labrig.physics import transfer
 
-_N = 64
-_COS = np.cos(2 * np.pi * np.arange(_N) / _N)
+_N = 64  # samples per cycle of the map's describing function
 
 
 def drive_map(v, th):
@@ -51,8 +50,8 @@ def distorted_drive(th, ctx: Context):
         drv = np.array([_drive(s) for s in ctx.sines])
         a = np.abs(drv)
         ok = a > 0
-        c = np.fft.rfft(drive_map(a[:, None] * _COS[None, :], th), axis=1) * 2 / _N
-        c1, c3 = np.where(ok, c[:, 1].real, 1.0), c[:, 3].real
+        c = cosine_harmonics(lambda x: drive_map(x, th), a, _N)
+        c1, c3 = np.where(ok, c[:, 0], 1.0), c[:, 2]
         g1 = np.where(ok, c1 / np.where(ok, a, 1.0), 1.0)
         turn = np.where(ok, drv / np.where(ok, a, 1.0), 1.0) ** 2
         p.hd = p.hd.astype(complex)
