@@ -25,6 +25,7 @@ from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
+from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
@@ -302,8 +303,22 @@ class Candidate:
         return self.ext.form if self.ext else ""
 
 
+def _choice(c: Candidate) -> tuple:
+    """The order of a family's forms: those with evidence first, by how they predict the held-out half."""
+    return (c.delta_bic >= DBIC_EFFECT, max(c.heldout_ratio, c.ratio_vs_reference) if c.delta_bic < DBIC_EFFECT else c.delta_bic)
+
+
+def _family_form(c: Candidate, k: int, pressure: bool) -> Extension:
+    """The form a worker's candidate was fitted in: the family's k-th, or that form at its parameters under the
+    pressure law (pressure_law.py)."""
+    ext = FAMILIES[c.name][k]
+    return scaled(ext, [c.params[p] for p in ext.params]) if pressure else ext
+
+
 def _starts(name: str, ext) -> list[np.ndarray]:
     starts = [np.array(ext.x0, float)]
+    if base_form(ext.form):
+        return starts  # warm-started where its form was fitted (pressure_law.py)
     if name == "back_relaxation":
         starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0]), np.array([0.8, 2.0, 0.6]), np.array([0.8, 30.0, 0.6])]
     if name == "time_delay":
@@ -388,13 +403,20 @@ class _Scorer:
             # _significant; a family of ONLY_BLOCKS none of which is missed): the catalogue's form alone, for the record
             family = family[:1]
         forms = [self.score_form(name, ext) for ext in family]
-        return min(forms, key=lambda c: (c.delta_bic >= DBIC_EFFECT, max(c.heldout_ratio, c.ratio_vs_reference) if c.delta_bic < DBIC_EFFECT else c.delta_bic))
+        best = min(forms, key=_choice)
+        if name in AT_THE_CLAMP and len(family) > 1 and min(fitted_pressures(self.ctx_fit), fitted_pressures(self.ctx_held)) >= 2 and best.ext is not None:
+            # the best form's strength as a law of the clamp pressure (pressure_law.py), from where it stands
+            law = self.score_form(name, scaled(best.ext, [best.params[p] for p in best.ext.params]))
+            best = min(best, dataclasses.replace(law, params={**best.params, **law.params}), key=_choice)
+        return best
 
-    def portable(self, name: str) -> tuple[Candidate, int | None]:
-        """``score`` as a worker sends it back: the form as its index in the family (some forms are closures)."""
+    def portable(self, name: str) -> tuple[Candidate, tuple[int, bool] | None]:
+        """``score`` as a worker sends it back: the form as its index in the family (some forms are closures) and
+        whether it was scaled by the pressure law."""
         c = self.score(name)
-        k = next((i for i, e in enumerate(FAMILIES[name]) if e is c.ext), None)
-        return dataclasses.replace(c, ext=None), k
+        form = base_form(c.form) or c.form
+        k = next((i for i, e in enumerate(FAMILIES[name]) if e.form == form), None)
+        return dataclasses.replace(c, ext=None), None if k is None else (k, c.form != form)
 
     def score_form(self, name: str, ext: Extension) -> Candidate:
         if not (ext.refit_mechanics and self.refit_mechanics):
@@ -426,7 +448,7 @@ def _rank(scorer: _Scorer, names: list[str]) -> list[Candidate]:
     # the largest families first (their cost grows with their forms), so that no worker is left with one at the end
     order = sorted(names, key=lambda name: -len(FAMILIES[name]))
     done = dict(zip(order, forked_map(scorer.portable, order)))
-    cands = [dataclasses.replace(c, ext=None if k is None else FAMILIES[c.name][k]) for c, k in (done[name] for name in names)]
+    cands = [dataclasses.replace(c, ext=None if k is None else _family_form(c, *k)) for c, k in (done[name] for name in names)]
     return sorted(cands, key=lambda c: c.delta_bic)
 
 

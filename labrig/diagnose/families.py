@@ -17,7 +17,8 @@ names the effect by its signature; the form found is reported (``extended.form``
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
-The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``.
+The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``. The families whose cause sits at the clamp
+also try their best form with its strength a law of the clamp pressure (``pressure_law``, fitted by the engine).
 """
 
 from __future__ import annotations
