@@ -51,8 +51,11 @@
 * Fresh14 held-out set (``--set fresh14``, bench/inject_fresh14.py ``fresh14_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 112-114, the paper
   strip 39 mm free, a new data shape (the laser zeroed at each record's start).
+* Fresh15 held-out set (``--set fresh15``, bench/inject_fresh15.py ``fresh15_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 115-117, the paper
+  strip 31 mm free, a new data shape (the step records logged on a logarithmic time base after each edge).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -141,7 +144,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh11": "fresh11 held-out set (diagnosed once unseen at 3e229bf; seen since)",
           "fresh12": "fresh12 held-out set (diagnosed once unseen at 277c32f, the diagnosis as at 3e229bf; seen since)",
           "fresh13": "fresh13 held-out set (diagnosed once unseen at 41aa7ca; seen since)",
-          "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)"}
+          "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)",
+          "fresh15": "fresh15 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
