@@ -151,6 +151,26 @@ def test_samples_lost_in_packets_are_put_back_on_the_records_grid():
     assert (filled, gaps) == (0, 0) and tj is jitter and rj is ramp
 
 
+def test_a_drive_across_a_gap_is_held_and_the_filled_samples_are_marked():
+    """A logger that thins a step's plateau (one averaged row per long interval, full rate after each change): across
+    the last gap before the fall the drive holds until the row that shows the change, not a ramp from the gap's
+    last reading (a current the strip never drew), and the samples put back are marked as not read."""
+    import numpy as np
+
+    from labrig.estimate.session_data import filled_mask, held, regular_grid
+
+    t = np.arange(0.0, 4.0, 0.002)
+    v = np.where((t >= 1.0) & (t < 3.0), 1.0, 0.0)
+    keep = (t < 1.1) | (t >= 3.0) | (np.arange(t.size) % 100 == 0)  # full rate to 0.1 s after the rise and from the fall
+    filled, gaps, grid, (lin,) = regular_grid(t[keep], v[keep])
+    assert filled and grid.size == t.size
+    hold = held(t[keep], v[keep], grid)
+    np.testing.assert_array_equal(hold, v)  # the edge where it was, the plateau at 1 V to its last sample
+    assert np.any((lin > 0.01) & (lin < 0.99))  # the line drawn across the gap: a ramp into the fall
+    mask = filled_mask(t[keep], grid)
+    np.testing.assert_array_equal(mask, ~keep)
+
+
 @pytest.mark.parametrize("rounding", ["float32", "decimals", "whole_ms"])
 def test_stamps_rounded_to_a_grid_are_read_on_the_clocks_grid(rounding):
     """A uniform clock whose stamps were stored rounded (32-bit floats late in a session, a CSV's four decimals at 3

@@ -145,13 +145,20 @@ def _measured_steps(ctx: Context) -> list:
         for k, st in enumerate(ctx.steps):
             edge = ctx.step_timing[k] if k < len(ctx.step_timing) else (0.0, 0.0)
             per = []
-            for me, nz, tm in ((st.d, st.noise_d, edge[0]), (st.i, st.noise_i, edge[1])):
+            for me, nz, tm in ((st.observed(st.d), st.noise_d, edge[0]), (st.observed(st.i), st.noise_i, edge[1])):
                 rms = float(np.sqrt(np.mean(me**2))) or 1.0
-                per.append((np.sqrt(_step_sigma(nz, rms) ** 2 + np.square(tm)), rms))  # noise, model floor, where the edge fell in its sample
-            out.append((per, math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))))
+                # noise, model floor, where the edge fell in its sample
+                per.append((np.sqrt(_step_sigma(nz, rms) ** 2 + np.square(st.observed(tm) if np.ndim(tm) else tm)), rms))
+            out.append((per, _step_weight(st)))
         return out
 
     return by_records("measured_steps", (ctx.steps, ctx.step_timing), make)
+
+
+def _step_weight(st) -> float:
+    """A step record's residual samples are correlated: its blocks count as STEP_EFFECTIVE_POINTS. By the record's
+    span (all its blocks, read or not): the blocks' level is then in the same unit whatever share of them was read."""
+    return math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0))
 
 
 def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.ndarray]]:
@@ -172,7 +179,7 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
         parts: dict[str, tuple[list, list]] = {"step_d": ([], []), "step_i": ([], [])}
         for k, (st, (per, w)) in enumerate(zip(ctx.steps, _measured_steps(ctx))):
             for key, pr, me, (sig, rms) in (("step_d", pred.step_d[k], st.d, per[0]), ("step_i", pred.step_i[k], st.i, per[1])):
-                r = pr - me
+                r = st.observed(pr - me)
                 parts[key][0].append(r / sig / w)
                 parts[key][1].append(r / rms / w * 3)
         for key, (ev, rel) in parts.items():
@@ -234,8 +241,8 @@ def noise_levels(ctx: Context) -> dict[str, float]:
             out["harm_" + key[-1]] = rms(np.nan_to_num(own / np.abs(me) / np.hypot(rel / chi, HARM_FLOOR)))
         out["force"] = 1.0  # its unit is the indicator's counts alone
     for key, attr in (("step_d", "d"), ("step_i", "i")):
-        lv = [getattr(st, f"noise_{attr}") / _step_sigma(getattr(st, f"noise_{attr}"), float(np.sqrt(np.mean(getattr(st, attr) ** 2))) or 1.0)
-              / math.sqrt(max(st.t.size / STEP_EFFECTIVE_POINTS, 1.0)) for st in ctx.steps]
+        lv = [getattr(st, f"noise_{attr}") / _step_sigma(getattr(st, f"noise_{attr}"), float(np.sqrt(np.mean(st.observed(getattr(st, attr)) ** 2))) or 1.0)
+              / _step_weight(st) for st in ctx.steps]
         if lv:
             out[key] = rms(lv)
     if ctx.lines:

@@ -72,10 +72,17 @@ class StepFeature:
     v_full: np.ndarray = field(default_factory=lambda: np.zeros(0))  # the drive at the record's own rate
     fs_full: float = 0.0
     q: int = 1
+    # per block: whether a sample of it was read (None: all were); a block of filled samples only (a gap in the time
+    # stamps, session_data.regular_grid) is not compared
+    known: np.ndarray | None = None
 
     def decimate(self, x: np.ndarray) -> np.ndarray:
         n = self.t.size * self.q
         return x[:n].reshape(-1, self.q).mean(axis=1)
+
+    def observed(self, x: np.ndarray) -> np.ndarray:
+        """The blocks of x (one per block of the record) where samples were read."""
+        return x if self.known is None else np.asarray(x)[self.known]
 
 
 @dataclass
@@ -244,7 +251,9 @@ def extract(sd: SessionData) -> Features:
             pre = r.t < step_onset(r)
             nd = float(np.std(r.d[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
             ni = float(np.std(r.i[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
-            feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)), r.v.copy(), r.fs, q))
+            known = None if not r.filled.any() else ~r.filled[: t.size * q].reshape(-1, q).all(axis=1)
+            feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)),
+                                           r.v.copy(), r.fs, q, known))
         amp, floor = {}, {}
         f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
         freqs = [f for f in LINE_HZ if not (f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0))]

@@ -26,13 +26,17 @@ STEP_WINDOW_ACCURACY = 0.0024
 
 def worst_window(residual: np.ndarray, t: np.ndarray) -> tuple[float, float]:
     """(largest RMS over consecutive ``WINDOW_S`` windows, its start from the record's start); (0, 0) when the record
-    holds fewer than four windows."""
+    holds fewer than four windows. Residuals that are NaN (blocks not read: ``StepFeature.known``) are left out; a
+    window with fewer than half its blocks read is not judged."""
     dt = float(np.median(np.diff(t))) if t.size > 1 else 0.0
     w = max(int(round(WINDOW_S / dt)), 1) if dt > 0 else 0
     n = residual.size // w if w else 0
     if n < 4:
         return 0.0, 0.0
-    rms = np.sqrt(np.mean(residual[: n * w].reshape(n, w) ** 2, axis=1))
+    win = residual[: n * w].reshape(n, w)
+    read = np.sum(np.isfinite(win), axis=1)
+    rms = np.sqrt(np.nansum(win**2, axis=1) / np.maximum(read, 1))
+    rms[read < 0.5 * w] = 0.0
     k = int(np.argmax(rms))
     return float(rms[k]), float(t[k * w] - t[0])
 
@@ -46,7 +50,10 @@ def step_windows(contexts: list[Context]) -> dict[str, Any] | None:
         for st, d in zip(ctx.steps, pred):
             peak = float(np.max(np.abs(d))) if np.size(d) else 0.0
             if peak > 0:
-                level, at = worst_window(np.asarray(d) - st.d, st.t)
+                r = np.asarray(d) - st.d
+                if st.known is not None:
+                    r = np.where(st.known, r, np.nan)
+                level, at = worst_window(r, st.t)
                 per.append((level / peak, at, st.pressure_kPa))
     if len(per) < 2:
         return None

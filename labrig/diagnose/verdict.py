@@ -42,9 +42,9 @@ def abscissa(name: str, ctx, size: int) -> tuple[np.ndarray, str, bool, np.ndarr
         return np.tile(np.repeat(x, 2), 2), x_label, log, series
     if name == "force" and size == f.size:
         return np.arange(size, dtype=float), "sine record (in order)", False, np.full(size, "", dtype=object)
-    if name in ("step_d", "step_i") and size == sum(st.t.size for st in ctx.steps):
-        x = np.concatenate([st.t - st.t[0] for st in ctx.steps]) if ctx.steps else np.zeros(0)
-        lab = np.concatenate([np.full(st.t.size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x
+    if name in ("step_d", "step_i") and size == sum(st.observed(st.t).size for st in ctx.steps):
+        x = np.concatenate([st.observed(st.t - st.t[0]) for st in ctx.steps]) if ctx.steps else np.zeros(0)
+        lab = np.concatenate([np.full(st.observed(st.t).size, _pressure_label(st.pressure_kPa), dtype=object) for st in ctx.steps]) if ctx.steps else x
         return x, "time from record start (s)", False, lab
     if name == "eis" and getattr(ctx, "spectra", None) and size == 2 * sum(sp.f.size for sp, _ in ctx.spectra):
         f = np.concatenate([sp.f for sp, _ in ctx.spectra])
