@@ -145,7 +145,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh12": "fresh12 held-out set (diagnosed once unseen at 277c32f, the diagnosis as at 3e229bf; seen since)",
           "fresh13": "fresh13 held-out set (diagnosed once unseen at 41aa7ca; seen since)",
           "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)",
-          "fresh15": "fresh15 held-out set (unseen)"}
+          "fresh15": "fresh15 held-out set (diagnosed once unseen at 6439289; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

@@ -104,7 +104,7 @@ def test_where_names_the_band_the_order_and_the_time():
     f = np.logspace(-1, np.log10(20), 15)
     sines = [SimpleNamespace(f=x, amplitude_V=0.5) for x in f]
     t = np.arange(100) * 0.02
-    ctx = SimpleNamespace(sines=sines, steps=[SimpleNamespace(t=t, pressure_kPa=612.0)], lines=[])
+    ctx = SimpleNamespace(sines=sines, steps=[SimpleNamespace(t=t, pressure_kPa=612.0, observed=lambda x: x)], lines=[])
     frf = np.zeros(30)
     frf[:15][(f > 2) & (f < 5)] = 3.0
     harm = np.zeros(60)
