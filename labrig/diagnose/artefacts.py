@@ -52,6 +52,7 @@ import numpy as np
 from scipy.ndimage import median_filter
 
 from labrig.diagnose import spells
+from labrig.diagnose.arming import ARMING_Z, arming
 from labrig.diagnose.clipping import CLIP_RUN, UNITS, clipping, run_lengths
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
@@ -349,15 +350,16 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["shifts"] = _timed(per, "shift", spells.SHIFT_Z)
     out["spell_power"], out["shift_z"] = spells.SPELL_POWER, spells.SHIFT_Z
     out["clipped"] = clipping(sd, MIN_RECORDS)
+    out["arming"] = arming(sd, MIN_RECORDS)
     out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
-                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"])
+                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["arming"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "wander": max(wander, default=0.0),
                   "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0),
                   "spell": _second(per, "spell"), "shift": _second(per, "shift"),
-                  "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0}
+                  "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"]}
     return out
 
 
@@ -374,7 +376,7 @@ def level(a: dict[str, Any]) -> float:
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
-                     m.get("clip_run", 0) / CLIP_RUN))
+                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z))
 
 
 def detail(a: dict[str, Any]) -> str:
@@ -403,6 +405,12 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the {' and '.join(q['channels'])} noise follows the drive's phase (its variance up to "
                      f"{a['max']['phase_noise']:.1f}x from one part of the cycle to another, median over the sine records): a sensor's "
                      f"noise growing with the target's speed or range, a contact chattering while the strip moves")
+    if a.get("arming", {}).get("flagged"):
+        g = a["arming"]
+        parts.append(f"the {' and '.join(g['channels'])} is not at rest for the first {g['window_s']:g} s of {len(g['records'])} step "
+                     f"records ({', '.join(g['records'][:4])}{', ...' if len(g['records']) > 4 else ''}), its scatter up to "
+                     f"z = {a['max']['arming_z']:.0f} over the rest's before the edge: something switched as each record is armed "
+                     f"(a relay ringing the sensor's stand, an amplifier settling)")
     for key, what in (("spells", "the {ch} noise rises {v:.0f}-fold for a while and falls back (a spell: a draught or a jet "
                                   "buffeting the strip, a vibration or a transmitter switched on and off)"),
                       ("shifts", "the {ch} level steps by {v:.0f} times its noise and stays (a rectified radio carrier, a "
