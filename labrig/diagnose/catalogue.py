@@ -77,13 +77,16 @@ class Prediction:
     # switched on and off or varying between records, its spectrum and couplings fixed
     line_level: bool = False
 
+    def copy(self) -> "Prediction":
+        """A copy whose arrays an extension may change in place."""
+        return Prediction(self.Hd.copy(), self.Hi.copy(), self.hd.copy(), self.hi.copy(), [d.copy() for d in self.step_d],
+                          [i.copy() for i in self.step_i], self.force_rel.copy(), dict(self.line), self.line_level)
+
 
 def baseline(ctx: Context) -> Prediction:
     """The baseline's predictions, or those of the effects already accepted (a fresh copy)."""
     if ctx.base is not None:
-        b = ctx.base
-        return Prediction(b.Hd.copy(), b.Hi.copy(), b.hd.copy(), b.hi.copy(), [d.copy() for d in b.step_d],
-                          [i.copy() for i in b.step_i], b.force_rel.copy(), dict(b.line), b.line_level)
+        return ctx.base.copy()
     n = len(ctx.sines)
     return Prediction(ctx.Hd.copy(), ctx.Hi.copy(), np.zeros((n, 2), complex), np.zeros((n, 2), complex),
                       [d.copy() for d in ctx.step_d], [i.copy() for i in ctx.step_i], np.zeros(n), {})

@@ -69,19 +69,16 @@ def scaled(ext: Extension, theta) -> Extension:
         s, m = map(float, th)
         at = (*key, id(ctx.base))  # the cache is shared by a context's copies, which may stand on other bases
         p0, p1 = ctx.cache.get(at) or ctx.cache.setdefault(at, (baseline(ctx), ext.apply(theta, ctx)))
-        p = dataclasses.replace(p1, Hd=p1.Hd.copy(), Hi=p1.Hi.copy(), hd=p1.hd.copy(), hi=p1.hi.copy(), step_d=[d.copy() for d in p1.step_d],
-                                step_i=[i.copy() for i in p1.step_i], force_rel=p1.force_rel.copy(), line=dict(p1.line))
         if s == 1.0 and m == 0.0:
-            return p
+            return p1.copy()
         ref = reference_pressure(ctx)
         ws, wt = s * _weights(ctx.sines, m, ref), s * _weights(ctx.steps, m, ref)
-        p.Hd, p.Hi = _power(p0.Hd, p1.Hd, ws), _power(p0.Hi, p1.Hi, ws)
-        p.hd = p0.hd + ws[:, None] * (p1.hd - p0.hd)
-        p.hi = p0.hi + ws[:, None] * (p1.hi - p0.hi)
-        p.force_rel = p0.force_rel + ws * (p1.force_rel - p0.force_rel)
-        p.step_d = [a + w * (b - a) for a, b, w in zip(p0.step_d, p1.step_d, wt)]
-        p.step_i = [a + w * (b - a) for a, b, w in zip(p0.step_i, p1.step_i, wt)]
-        return p
+        return dataclasses.replace(
+            p1, Hd=_power(p0.Hd, p1.Hd, ws), Hi=_power(p0.Hi, p1.Hi, ws),
+            hd=p0.hd + ws[:, None] * (p1.hd - p0.hd), hi=p0.hi + ws[:, None] * (p1.hi - p0.hi),
+            force_rel=p0.force_rel + ws * (p1.force_rel - p0.force_rel),
+            step_d=[a + w * (b - a) for a, b, w in zip(p0.step_d, p1.step_d, wt)],
+            step_i=[a + w * (b - a) for a, b, w in zip(p0.step_i, p1.step_i, wt)], line=dict(p1.line))
 
     own = len(ext.params)
     return dataclasses.replace(ext, params=LAW, x0=(1.0, 0.0), lo=(0.0, -4.0), hi=(5.0, 4.0), apply=apply,

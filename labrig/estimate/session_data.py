@@ -212,11 +212,14 @@ def regular_grid(t: np.ndarray, *cols: np.ndarray) -> tuple[int, int, np.ndarray
     return n - t.size, gaps, grid, [np.interp(grid, t, c) for c in cols]
 
 
+def _spacing(grid: np.ndarray) -> float:
+    return float(grid[1] - grid[0]) if grid.size > 1 else 1.0
+
+
 def filled_mask(t: np.ndarray, grid: np.ndarray) -> np.ndarray:
     """Per point of ``grid`` (``regular_grid``'s): True where no stamp of ``t`` fell within half a spacing of it, a value
     filled in rather than read."""
-    dt = float(grid[1] - grid[0]) if grid.size > 1 else 1.0
-    near = np.clip(np.round((t - grid[0]) / dt).astype(int), 0, grid.size - 1)
+    near = np.clip(np.round((t - grid[0]) / _spacing(grid)).astype(int), 0, grid.size - 1)
     out = np.ones(grid.size, bool)
     out[near] = False
     return out
@@ -225,8 +228,10 @@ def filled_mask(t: np.ndarray, grid: np.ndarray) -> np.ndarray:
 def held(t: np.ndarray, v: np.ndarray, grid: np.ndarray) -> np.ndarray:
     """``v`` read at the grid's points as its last value before each (a zero-order hold): a step's drive changes at
     an instant, so across a gap it holds until the next reading shows the change; a line drawn across the gap would
-    be a ramp the strip never saw, and its current (C dv/dt over the gap) a current never drawn."""
-    return v[np.clip(np.searchsorted(t, grid + 1e-9 * (grid[1] - grid[0] if grid.size > 1 else 1.0), side="right") - 1, 0, v.size - 1)]
+    be a ramp the strip never saw, and its current (C dv/dt over the gap) a current never drawn. A grid point within a
+    billionth of a spacing of a stamp reads that stamp (the grid is the stamps' own, up to rounding)."""
+    last = np.searchsorted(t, grid + 1e-9 * _spacing(grid), side="right") - 1
+    return v[np.clip(last, 0, v.size - 1)]
 
 
 STAMP_LEVELS = 8  # distinct spacings (to 1 ppm of the median) at most for stamps rounded to a grid; jitter has many
@@ -298,12 +303,12 @@ def load_session(path: str | Path) -> SessionData:
                 rec.t = grid
             filled = 0
             if st.kind not in SINE_KINDS:  # a sine is demodulated at its samples' own times: gaps cost it nothing
-                t_read, v_read = rec.t, rec.v
-                filled, gaps, rec.t, (rec.v, rec.i, rec.d) = regular_grid(rec.t, rec.v, rec.i, rec.d)
+                t_read = rec.t
+                filled, gaps, rec.t, (rec.i, rec.d) = regular_grid(rec.t, rec.i, rec.d)
                 if filled:
                     # the drive held across a gap, the responses interpolated and marked: the diagnosis compares the
                     # model where samples were read (a logger that thins a step's plateau, a buffer's lost packets)
-                    rec.v, rec.filled = held(t_read, v_read, rec.t), filled_mask(t_read, rec.t)
+                    rec.v, rec.filled = held(t_read, rec.v, rec.t), filled_mask(t_read, rec.t)
             if filled:
                 notes.append(f"step {st.name}: {filled} samples missing in {gaps} gaps of its time stamps, interpolated (the drive held)")
             if bucket is None:
