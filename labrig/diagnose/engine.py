@@ -29,6 +29,7 @@ from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressur
 from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
+from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, wet_contexts
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
 from labrig.physics.impedance import impedance
@@ -301,7 +302,7 @@ class Candidate:
     heldout_ratio: float  # against the fitted baseline (what is reported)
     chi2_fit: float
     ratio_vs_reference: float = float("nan")  # against the baseline refitted the same way (what decides)
-    refit: Refit | None = None
+    refit: Refit | WetRefit | None = None  # the contexts the effect stands on, if not the baseline's
     held: dict | None = None  # its held-out blocks (``blocks`` output): what structure it leaves
     ext: Extension | None = None  # the form of the effect's family it was fitted in
 
@@ -374,8 +375,9 @@ class _Scorer:
     """Fits and scores extensions on one round of forward selection (the reference refit made once)."""
 
     def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_held: dict, refit_mechanics: bool,
-                 valley: dict | None = None):
+                 valley: dict | None = None, wet: WetSession | None = None):
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
+        self.wet_session = wet  # first round only: a drying is also judged on the wet strip's refitted baseline
         self.valley = valley  # the electrical stage's loosest direction (nuisance.py)
         rms = block_rms(base_held)
         self.accuracy = attainable_accuracy(ctx_held)
@@ -415,7 +417,30 @@ class _Scorer:
             # the best form's strength as a law of the clamp pressure (pressure_law.py), from where it stands
             law = self.score_form(name, scaled(best.ext, [best.params[p] for p in best.ext.params]))
             best = min(best, dataclasses.replace(law, params={**best.params, **law.params}), key=_choice)
+        if name == "dehydration" and self.wet_session is not None:
+            on_base = min(forms, key=_choice)
+            if on_base.delta_bic < DBIC_EFFECT and RATIO_EFFECT < on_base.heldout_ratio < 1.0:
+                # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py)
+                wet = self.wet(on_base)
+                best = best if wet is None else min(best, wet, key=_choice)
         return best
+
+    def wet(self, c: Candidate) -> Candidate | None:
+        """The drying form ``c`` (fitted on the baseline) fitted again on the seed-000 fit of the session corrected to
+        the wet strip; None where no correction can be read (wet_strip.py)."""
+        feats = self.ctx_fit.feats
+        corr = correction(self.wet_session, feats, c.ext, c.params)
+        both = None if corr is None else wet_contexts(self.wet_session, feats, c.ext, corr, build_context)
+        if both is None:
+            return None
+        cf, ch = both
+        th, c_fit = _fit_extension(c.name, cf, c.ext)
+        held = blocks(c.ext.apply(th, ch), ch)
+        h = nrmse(held, self.where, self.accuracy)
+        ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
+        dbic = c_fit - self.c0 + (len(th) + 2) * math.log(max(self.n, 2))  # the two losses corrected count too
+        return Candidate(c.name, {**dict(zip(c.ext.params, map(float, th))), **corr}, dbic, h, ratio, c_fit, ratio,
+                         WetRefit(cf, ch), held, c.ext)
 
     def portable(self, name: str) -> tuple[Candidate, tuple[int, bool] | None]:
         """``score`` as a worker sends it back: the form as its index in the family (some forms are closures) and
@@ -582,7 +607,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     accuracy = attainable_accuracy(ctx_held)  # the prior, or the session's own noise where that is larger
     where = missed(held_rms, accuracy)
     base_heldout = heldout_error(held_rms, where, accuracy)
-    scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley)
+    scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley, WetSession(sd, fit_set, held_set))
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy)
     rival = _rival(scorer, named, held_rms, accuracy)

@@ -33,6 +33,7 @@ def drying(loss):
             p.step_i[k] = p.step_i[k] * lev_i * (1 - k_i * x)
         return p
 
+    apply.loss = loss  # the loss's shape, for the wet strip's refit (wet_strip.py)
     return apply
 
 

@@ -67,6 +67,7 @@ class TimeRecord:
 class PressureData:
     pressure_kPa: float
     eis: tuple[np.ndarray, np.ndarray] | None = None  # (f_Hz, Z complex)
+    eis_t_start: float = float("nan")  # rig clock at the spectrum's start (s): a strip drying between it and the sines
     records: list[TimeRecord] = field(default_factory=list)
     sines: list[SineEstimate] = field(default_factory=list)  # stepped-sine estimates, ascending f
     bla: BlaEstimate | None = None  # multisine BLA (the design with the most realisations x periods)
@@ -287,7 +288,7 @@ def load_session(path: str | Path) -> SessionData:
                 if not _finite(f, z.real, z.imag) or f.size < 3:
                     notes.append(f"step {st.name}: impedance spectrum has NaN or < 3 points, not used")
                 elif bucket is not None:
-                    bucket.eis = (f, z)
+                    bucket.eis, bucket.eis_t_start = (f, z), float(st.t_start)
                 continue
             if "daq" not in streams:
                 continue
@@ -320,10 +321,15 @@ def load_session(path: str | Path) -> SessionData:
     if rounded:
         notes.append(f"{rounded} records' time stamps are a uniform clock rounded to a grid: read on that clock's grid")
     for b in by_p.values():
-        b.sines.sort(key=lambda s: s.frequency_Hz)
-        _add_multisine(b, notes)
-        _add_drift(b)
+        add_derived(b, notes)
     return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose)
+
+
+def add_derived(b: PressureData, notes: list[str] | None = None) -> None:
+    """What a pressure's records give once loaded: the stepped sines in frequency order, the multisine BLA, the drift."""
+    b.sines.sort(key=lambda s: s.frequency_Hz)
+    _add_multisine(b, [] if notes is None else notes)
+    _add_drift(b)
 
 
 # ------------------------------------------------------------------------------------------ multisine

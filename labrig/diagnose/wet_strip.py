@@ -1,0 +1,163 @@
+"""A drying judged on the wet strip: the session corrected by the loss and the seed-000 fit run again on it.
+
+The baseline is the seed-000 fit's stages (``engine.baseline_specimens``), and that fit is per pressure where a sweep
+is per time: K_t bar and the clamp's electrical values per pressure, the line's values, alpha and gamma shared. A strip
+drying through the session is taken in by it: the conductance's loss by the clamp values pressure by pressure, the
+gain's partly by K_t bar, and what is left bends the shared values, so that the first pressure, where the strip has
+hardly dried, misses too. A drying form applied on that baseline scales records it has already half explained; on a
+drying of exactly the family's linear form written into a clean seed-001 session it reached 0.51 (not named) and found
+the conductance's loss at 0.012 against the 0.15 written (docs/diagnosis.md, "A drying through the session").
+
+The data hold the conductance's loss without the model: the analyser's spectrum and the DAQ's current admittance
+measure the same admittance, the spectrum first and the stepped sines after it, so |Y_daq(f)| |Z(f)| at one pressure
+is 1 on a strip that holds its water (within 0.3 % on the clean seed-001 sessions) and falls with the loss through the
+pressure's sines. Its slope against the form's loss x(t), within each pressure (a level per pressure: a calibration
+or the spectrum's own moment), is the conductance's loss k_i (``conductance_loss``).
+
+With k_i so and the displacement's loss k_d from the form fitted on the baseline, the session's records are corrected
+to the wet strip (displacement / (1 - k_d x), current / (1 - k_i x), each sample at its own time; a spectrum x (1 - k_i
+x) at its start), the seed-000 fit is run on them, and the form is fitted again on that wet baseline, whose spectra are
+dried again at their moments (no form changes a spectrum). It is scored as every form: DeltaBIC on the fitted half
+(the two corrections counted as parameters), the held-out ratio against the session's own baseline. k_i is read off
+the fitted half's pressures only; the refit uses every pressure, as the baseline does.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from labrig.diagnose.catalogue import Context, Extension
+from labrig.diagnose.features import Features
+from labrig.estimate import sine_estimate
+from labrig.estimate.session_data import PressureData, SessionData, add_derived, sine_cycles
+from labrig.fit.seed000 import fit_seed000
+from labrig.records import RecordKind
+
+LOSS_BOUNDS = (-0.5, 0.9)  # the corrections' range (a re-wetting may gain; a strip loses at most most of its water)
+MIN_SINES = 3  # per pressure, inside the spectrum's band, for the admittance's trace
+
+
+@dataclass
+class WetSession:
+    """What the refit needs beyond a context: the session's records and the halves' pressures (``engine.split``)."""
+
+    sd: SessionData
+    fit_set: set
+    held_set: set
+
+
+@dataclass
+class WetRefit:
+    """The contexts on the wet strip's baseline (``engine._adopt`` builds on them when the form is accepted)."""
+
+    ctx_fit: Context
+    ctx_held: Context
+
+
+def loss_of(ext: Extension, theta: np.ndarray, feats: Features) -> Callable[[np.ndarray], np.ndarray] | None:
+    """The form's loss x(t) at its fitted shape parameters (None: the form has no separable loss)."""
+    loss = getattr(ext.apply, "loss", None)
+    if loss is None:
+        return None
+    sh = list(theta[4:])
+    ctx = _FeaturesOnly(feats)
+    return lambda t: np.asarray(loss(np.asarray(t, float), sh, ctx), float)
+
+
+@dataclass
+class _FeaturesOnly:
+    feats: Features  # what a loss reads of its context: the session's clock and charge
+
+
+def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pressures: set) -> float | None:
+    """k_i from log(|Y_daq| |Z|) = a_p - k_i x(t) over the stepped sines of ``pressures`` (None: no spectrum with
+    MIN_SINES sines inside its band, or the loss does not change within a pressure)."""
+    xs, ys = [], []
+    for spec in feats.spectra:
+        if spec.pressure_kPa not in pressures:
+            continue
+        ss = [s for s in feats.sines if s.pressure_kPa == spec.pressure_kPa and spec.f.min() <= s.f <= spec.f.max() and abs(s.Hi) > 0]
+        if len(ss) < MIN_SINES:
+            continue
+        lz = np.interp(np.log([s.f for s in ss]), np.log(spec.f), np.log(np.abs(spec.Z)))
+        y = np.log(np.abs([s.Hi for s in ss])) + lz
+        xp = x(np.array([s.t_start for s in ss]))
+        xs.append(xp - xp.mean())
+        ys.append(y - y.mean())
+    if not xs:
+        return None
+    xx, yy = np.concatenate(xs), np.concatenate(ys)
+    if float(np.sum(xx * xx)) < 1e-12:
+        return None
+    return float(np.clip(-np.sum(xx * yy) / np.sum(xx * xx), *LOSS_BOUNDS))
+
+
+def wet_session(sd: SessionData, x: Callable[[np.ndarray], np.ndarray], k_d: float, k_i: float) -> SessionData:
+    """The session as the wet strip would have read it: every sample divided by its loss, each spectrum multiplied
+    (its impedance rises as the conductance falls), the stepped sines' estimates made again."""
+    out = []
+    for b in sd.pressures:
+        recs = []
+        for r in b.records:
+            xr = x(r.t_start + (r.t - r.t[0]))
+            recs.append(dataclasses.replace(r, d=r.d / (1 - k_d * xr), i=r.i / (1 - k_i * xr)))
+        nb = PressureData(b.pressure_kPa, records=recs, eis_t_start=b.eis_t_start)
+        if b.eis is not None:
+            nb.eis = (b.eis[0], b.eis[1] * (1 - k_i * float(x(np.array([spectrum_time(b)]))[0])))
+        nb.sines = [sine_estimate(r.t, r.v, r.i, r.d, float(r.meta["frequency_Hz"]), *sine_cycles(r)) for r in recs if r.kind == RecordKind.STEPPED_SINE]
+        add_derived(nb)
+        out.append(nb)
+    return dataclasses.replace(sd, pressures=out)
+
+
+def spectrum_time(b: PressureData) -> float:
+    """The spectrum's moment: its own start, or (not known) the pressure's first record's."""
+    if np.isfinite(b.eis_t_start):
+        return float(b.eis_t_start)
+    starts = [r.t_start for r in b.records if np.isfinite(r.t_start)]
+    return min(starts) if starts else float("nan")
+
+
+def redried(ctx: Context, x: Callable[[np.ndarray], np.ndarray], k_i: float) -> Context:
+    """``ctx`` (on the wet strip's baseline) with its spectra's predictions dried again at their moments."""
+    t_by_p = {}
+    for spec, _ in ctx.spectra:
+        t = spec.t_start if np.isfinite(spec.t_start) else _first_record(ctx, spec.pressure_kPa)
+        t_by_p[spec.pressure_kPa] = t
+    spectra = [(spec, zb / (1 - k_i * float(x(np.array([t_by_p[spec.pressure_kPa]]))[0]))) for spec, zb in ctx.spectra]
+    return dataclasses.replace(ctx, spectra=spectra)
+
+
+def _first_record(ctx: Context, p: float | None) -> float:
+    starts = [s.t_start for s in ctx.feats.sines if s.pressure_kPa == p] + [s.t_start for s in ctx.feats.steps if s.pressure_kPa == p]
+    return min(starts) if starts else ctx.feats.t0
+
+
+def correction(ws: WetSession, feats: Features, ext: Extension, params: dict[str, float]) -> dict[str, float] | None:
+    """The wet strip's correction for the form ``ext`` fitted on the baseline (``params``): its loss's shape, its
+    displacement loss, and the conductance's loss read off the admittance's trace on the fitted half (the names
+    ``wet_*`` report it with the form's own parameters). None: no separable loss or no trace to read."""
+    x = loss_of(ext, np.array([params[p] for p in ext.params]), feats)
+    k_i = None if x is None else conductance_loss(feats, x, ws.fit_set)
+    if k_i is None:
+        return None
+    return {"wet_gain_loss": float(np.clip(params["gain_loss"], *LOSS_BOUNDS)), "wet_conductance_loss": k_i,
+            **{f"wet_{p}": float(params[p]) for p in ext.params[4:]}}
+
+
+def wet_contexts(ws: WetSession, feats: Features, ext: Extension, corr: dict[str, float], build) -> tuple[Context, Context] | None:
+    """The fitted and held-out contexts (``build``: ``engine.build_context``) on the seed-000 fit of the session
+    corrected by ``corr`` (``correction``), their spectra dried again. None if that fit gives no strip."""
+    x = loss_of(ext, np.r_[np.zeros(4), [corr[f"wet_{p}"] for p in ext.params[4:]]], feats)
+    k_i = corr["wet_conductance_loss"]
+    fit = fit_seed000(wet_session(ws.sd, x, corr["wet_gain_loss"], k_i))
+    specimens = fit.staged_specimens or fit.specimens
+    if not specimens:
+        return None
+    cf = redried(build(feats, specimens, ws.fit_set), x, k_i)
+    ch = cf if ws.fit_set == ws.held_set else redried(build(feats, specimens, ws.held_set), x, k_i)
+    return cf, ch
