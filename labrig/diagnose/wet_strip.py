@@ -24,11 +24,14 @@ the fitted half's pressures only; the refit uses every pressure, as the baseline
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
+from scipy.interpolate import CubicSpline
+from scipy.optimize import minimize_scalar
 
 from labrig.diagnose.catalogue import Context, Extension
 from labrig.diagnose.features import Features
@@ -74,8 +77,10 @@ class _FeaturesOnly:
 
 
 def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pressures: set) -> float | None:
-    """k_i from log(|Y_daq| |Z|) = a_p - k_i x(t) over the stepped sines of ``pressures`` (None: no spectrum with
-    MIN_SINES sines inside its band, or the loss does not change within a pressure)."""
+    """k_i from log(|Y_daq| |Z|) = a_p + log(1 - k_i x(t)) over the stepped sines of ``pressures``, a_p a level per
+    pressure (profiled out); |Z| at each sine's frequency from a cubic spline of log |Z| in log f (a straight line
+    between the spectrum's points bends with the CPE's curvature, which the sines' order turns into a slope in time).
+    None: no spectrum with MIN_SINES sines inside its band, or the loss does not change within a pressure."""
     xs, ys = [], []
     for spec in feats.spectra:
         if spec.pressure_kPa not in pressures:
@@ -83,17 +88,17 @@ def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pre
         ss = [s for s in feats.sines if s.pressure_kPa == spec.pressure_kPa and spec.f.min() <= s.f <= spec.f.max() and abs(s.Hi) > 0]
         if len(ss) < MIN_SINES:
             continue
-        lz = np.interp(np.log([s.f for s in ss]), np.log(spec.f), np.log(np.abs(spec.Z)))
-        y = np.log(np.abs([s.Hi for s in ss])) + lz
-        xp = x(np.array([s.t_start for s in ss]))
-        xs.append(xp - xp.mean())
-        ys.append(y - y.mean())
-    if not xs:
+        o = np.argsort(spec.f)
+        lz = CubicSpline(np.log(spec.f[o]), np.log(np.abs(spec.Z[o])))(np.log([s.f for s in ss]))
+        ys.append(np.log(np.abs([s.Hi for s in ss])) + lz)
+        xs.append(x(np.array([s.t_start for s in ss])))
+    if not xs or max(float(np.ptp(xp)) for xp in xs) < 1e-9:
         return None
-    xx, yy = np.concatenate(xs), np.concatenate(ys)
-    if float(np.sum(xx * xx)) < 1e-12:
-        return None
-    return float(np.clip(-np.sum(xx * yy) / np.sum(xx * xx), *LOSS_BOUNDS))
+
+    def cost(k: float) -> float:
+        return sum(float(np.sum((r - r.mean()) ** 2)) for r in (y - np.log1p(-k * xp) for xp, y in zip(xs, ys)))
+
+    return float(minimize_scalar(cost, bounds=LOSS_BOUNDS, method="bounded", options={"xatol": 1e-5}).x)
 
 
 def wet_session(sd: SessionData, x: Callable[[np.ndarray], np.ndarray], k_d: float, k_i: float) -> SessionData:
@@ -128,8 +133,9 @@ def redried(ctx: Context, x: Callable[[np.ndarray], np.ndarray], k_i: float) -> 
     for spec, _ in ctx.spectra:
         t = spec.t_start if np.isfinite(spec.t_start) else _first_record(ctx, spec.pressure_kPa)
         t_by_p[spec.pressure_kPa] = t
-    spectra = [(spec, zb / (1 - k_i * float(x(np.array([t_by_p[spec.pressure_kPa]]))[0]))) for spec, zb in ctx.spectra]
-    return dataclasses.replace(ctx, spectra=spectra)
+    out = copy.copy(ctx)
+    out.spectra = [(spec, zb / (1 - k_i * float(x(np.array([t_by_p[spec.pressure_kPa]]))[0]))) for spec, zb in ctx.spectra]
+    return out
 
 
 def _first_record(ctx: Context, p: float | None) -> float:
