@@ -15,7 +15,7 @@ import pytest
 
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, SpectrumFeature
-from labrig.diagnose.wet_strip import MIN_SINES, conductance_loss, correction, loss_of, redried, wet_session, WetSession
+from labrig.diagnose.wet_strip import MIN_SINES, WetSession, conductance_loss, correction, loss_of, redried, refine_loss, wet_session
 from labrig.estimate.session_data import PressureData, SessionData, TimeRecord
 from labrig.records import RecordKind
 
@@ -103,3 +103,18 @@ def test_the_wet_strips_spectra_are_dried_again_at_their_moments():
     out = redried(ctx, lambda t: np.asarray(t, float) / 4500.0, 0.2)
     for (spec, zb), (_, z) in zip(ctx.spectra, out.spectra):
         assert z == pytest.approx(zb / (1 - 0.2 * spec.t_start / 4500.0))
+
+
+@pytest.mark.parametrize("k0, expect", [(0.1, 0.2), (0.3, 0.15), (0.2, 0.2)])
+def test_the_conductance_loss_is_refined_by_the_fitted_halfs_chi_square(k0, expect):
+    """From the admittance's reading, steps of half of it (at least 0.05) while the chi-square falls, three refits at
+    most: uphill from a reading that is low, once below where uphill does not help."""
+    seen = []
+
+    def on_wet(k):
+        seen.append(k)
+        return SimpleNamespace(k=k, chi2_fit=(k - 0.2) ** 2)
+
+    best = refine_loss(k0, on_wet)
+    assert best.k == pytest.approx(expect) and len(seen) <= 3 and seen[0] == k0
+    assert refine_loss(0.1, lambda k: None) is None  # no strip from the refit: no candidate

@@ -29,7 +29,7 @@ from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressur
 from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
-from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, wet_contexts
+from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, wet_contexts
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
 from labrig.physics.impedance import impedance
@@ -427,20 +427,27 @@ class _Scorer:
 
     def wet(self, c: Candidate) -> Candidate | None:
         """The drying form ``c`` (fitted on the baseline) fitted again on the seed-000 fit of the session corrected to
-        the wet strip; None where no correction can be read (wet_strip.py)."""
+        the wet strip, the conductance's loss refined from the admittance's reading by the fitted half's chi-square;
+        None where no correction can be read (wet_strip.py)."""
         feats = self.ctx_fit.feats
         corr = correction(self.wet_session, feats, c.ext, c.params)
-        both = None if corr is None else wet_contexts(self.wet_session, feats, c.ext, corr, build_context)
-        if both is None:
+        if corr is None:
             return None
-        cf, ch = both
-        th, c_fit = _fit_extension(c.name, cf, c.ext)
-        held = blocks(c.ext.apply(th, ch), ch)
-        h = nrmse(held, self.where, self.accuracy)
-        ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-        dbic = c_fit - self.c0 + (len(th) + 2) * math.log(max(self.n, 2))  # the two losses corrected count too
-        return Candidate(c.name, {**dict(zip(c.ext.params, map(float, th))), **corr}, dbic, h, ratio, c_fit, ratio,
-                         WetRefit(cf, ch), held, c.ext)
+
+        def on_wet(k_i: float) -> Candidate | None:
+            both = wet_contexts(self.wet_session, feats, c.ext, {**corr, "wet_conductance_loss": k_i}, build_context)
+            if both is None:
+                return None
+            cf, ch = both
+            th, c_fit = _fit_extension(c.name, cf, c.ext)
+            held = blocks(c.ext.apply(th, ch), ch)
+            h = nrmse(held, self.where, self.accuracy)
+            ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
+            dbic = c_fit - self.c0 + (len(th) + 2) * math.log(max(self.n, 2))  # the two losses corrected count too
+            return Candidate(c.name, {**dict(zip(c.ext.params, map(float, th))), **corr, "wet_conductance_loss": k_i},
+                             dbic, h, ratio, c_fit, ratio, WetRefit(cf, ch), held, c.ext)
+
+        return refine_loss(corr["wet_conductance_loss"], on_wet)
 
     def portable(self, name: str) -> tuple[Candidate, tuple[int, bool] | None]:
         """``score`` as a worker sends it back: the form as its index in the family (some forms are closures) and
