@@ -149,7 +149,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh13": "fresh13 held-out set (diagnosed once unseen at 41aa7ca; seen since)",
           "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)",
           "fresh15": "fresh15 held-out set (diagnosed once unseen at 6439289; seen since)",
-          "fresh16": "fresh16 held-out set (unseen)"}
+          "fresh16": "fresh16 held-out set (diagnosed once unseen at 6a827f8; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
