@@ -8,7 +8,8 @@ demodulated features almost untouched:
 * **bursts**: the reading leaves its signal for a few samples and comes back, as a laser that holds its last value
   while it has lost the spot, a reading clipped at the end of its range, a dropout to a sentinel value. After the
   record's periodic part, its slow trend and its amplitude drift are removed, the residual is beyond ``BURST_Z``
-  robust standard deviations for ``BURST_RUN`` or more samples in a row, in ``MIN_RECORDS`` records or more.
+  robust standard deviations for ``BURST_RUN`` or more samples in a row (``BURST_GUARD`` samples at each end of the
+  segment not searched: a filter's transient of the drive's switch), in ``MIN_RECORDS`` records or more.
 * **foreign lines**: a narrow line at a frequency that is neither a harmonic of the drive nor near the mains' (50
   or 60 Hz and harmonics, their sidebands at the drive's harmonics), each taken with its alias at the record's
   rate: a pump's or fan's vibration, a switching amplifier's ripple aliased into the band, a second instrument's
@@ -61,6 +62,11 @@ from labrig.records import SINE_KINDS
 
 BURST_Z = 6.0  # robust standard deviations
 BURST_RUN = 3  # samples in a row
+# the segment's ends are not searched for bursts: the drive is switched just past them, and a logger's anti-alias
+# filter (a decimating FIR, a delta-sigma converter's; zero-phase once its delay is taken off) spreads the switch's
+# current spike a few samples back into the record, a transient that does not "come back" (fresh16's decimated clean
+# session: 11-63 sigma on the last 3 of 199 samples before the switch, in 3 records)
+BURST_GUARD = (4, 0.02)  # samples: at least 4, or this share of the segment
 LINE_POWER = 25.0  # times the neighbouring bins' mean power
 MIN_RECORDS = 2  # an artefact of the recording recurs; one record's event may be a knock on the table
 HARMONICS = 10  # drive harmonics fitted before the residual is read (the catalogue's forms reach 3f; corners more)
@@ -293,7 +299,8 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
         per = _periodic_median(e, t, f0)
         e_burst = e - per
         e_burst = e_burst - _running_median(e_burst, fs, f0, bool(np.any(per)))
-        runs, longest, zmax = _bursts(e_burst, _quantum(y))
+        g = max(BURST_GUARD[0], math.ceil(BURST_GUARD[1] * e_burst.size))
+        runs, longest, zmax = _bursts(e_burst[g:-g], _quantum(y))
         lines, top = _foreign_lines(e, fs, f0)
         slow = _without_mains(e - per, t, f0, fs)
         quiet = slow - _running_median(slow, fs, f0, bool(np.any(per)))
