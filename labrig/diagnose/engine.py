@@ -412,13 +412,12 @@ class _Scorer:
             # _significant; a family of ONLY_BLOCKS none of which is missed): the catalogue's form alone, for the record
             family = family[:1]
         forms = [self.score_form(name, ext) for ext in family]
-        best = min(forms, key=_choice)
+        best = on_base = min(forms, key=_choice)
         if name in AT_THE_CLAMP and len(family) > 1 and min(fitted_pressures(self.ctx_fit), fitted_pressures(self.ctx_held)) >= 2 and best.ext is not None:
             # the best form's strength as a law of the clamp pressure (pressure_law.py), from where it stands
             law = self.score_form(name, scaled(best.ext, [best.params[p] for p in best.ext.params]))
             best = min(best, dataclasses.replace(law, params={**best.params, **law.params}), key=_choice)
         if name == "dehydration" and self.wet_session is not None:
-            on_base = min(forms, key=_choice)
             if on_base.delta_bic < DBIC_EFFECT and RATIO_EFFECT < on_base.heldout_ratio < 1.0:
                 # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py)
                 wet = self.wet(on_base)
@@ -438,14 +437,8 @@ class _Scorer:
             both = wet_contexts(self.wet_session, feats, c.ext, {**corr, "wet_conductance_loss": k_i}, build_context)
             if both is None:
                 return None
-            cf, ch = both
-            th, c_fit = _fit_extension(c.name, cf, c.ext)
-            held = blocks(c.ext.apply(th, ch), ch)
-            h = nrmse(held, self.where, self.accuracy)
-            ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-            dbic = c_fit - self.c0 + (len(th) + 2) * math.log(max(self.n, 2))  # the two losses corrected count too
-            return Candidate(c.name, {**dict(zip(c.ext.params, map(float, th))), **corr, "wet_conductance_loss": k_i},
-                             dbic, h, ratio, c_fit, ratio, WetRefit(cf, ch), held, c.ext)
+            w = self.fitted_on(c.name, c.ext, *both, extra_dof=2)  # the two losses corrected count too
+            return dataclasses.replace(w, params={**w.params, **corr, "wet_conductance_loss": k_i}, refit=WetRefit(*both))
 
         return refine_loss(corr["wet_conductance_loss"], on_wet)
 
@@ -457,14 +450,20 @@ class _Scorer:
         k = next((i for i, e in enumerate(FAMILIES[name]) if e.form == form), None)
         return dataclasses.replace(c, ext=None), None if k is None else (k, c.form != form)
 
+    def fitted_on(self, name: str, ext: Extension, cf: Context, ch: Context, extra_dof: int = 0) -> Candidate:
+        """The form fitted on ``cf`` and scored on ``ch`` against this round's baseline (its chi-square on the fitted
+        half, its held-out error where the baseline misses), ``extra_dof`` more parameters counted in DeltaBIC."""
+        th, c = _fit_extension(name, cf, ext)
+        held = blocks(ext.apply(th, ch), ch)
+        h = nrmse(held, self.where, self.accuracy)
+        ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
+        dof = len(th) + (ext.inner_dof(cf) if ext.inner_dof else 0) + extra_dof
+        return Candidate(name, dict(zip(ext.params, map(float, th))), c - self.c0 + dof * math.log(max(self.n, 2)), h, ratio, c, ratio,
+                         held=held, ext=ext)
+
     def score_form(self, name: str, ext: Extension) -> Candidate:
         if not (ext.refit_mechanics and self.refit_mechanics):
-            th, c = _fit_extension(name, self.ctx_fit, ext)
-            held = blocks(ext.apply(th, self.ctx_held), self.ctx_held)
-            h = nrmse(held, self.where, self.accuracy)
-            ratio = h / self.base_heldout if self.base_heldout > 0 else float("nan")
-            dbic = c - self.c0 + (len(th) + (ext.inner_dof(self.ctx_fit) if ext.inner_dof else 0)) * math.log(max(self.n, 2))
-            return Candidate(name, dict(zip(ext.params, map(float, th))), dbic, h, ratio, c, ratio, held=held, ext=ext)
+            return self.fitted_on(name, ext, self.ctx_fit, self.ctx_held)
         r = refit(ext, self.ctx_fit, self.ctx_held, blocks, _starts(name, ext), self.valley)
         c = chi2(blocks(ext.apply(r.theta, r.ctx_fit), r.ctx_fit))[0]
         held = blocks(ext.apply(r.theta, r.ctx_held), r.ctx_held)

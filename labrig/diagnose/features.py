@@ -106,7 +106,7 @@ class SpectrumFeature:
     f: np.ndarray
     Z: np.ndarray
     noise_rel: float
-    t_start: float = float("nan")  # rig clock (s); nan: not known
+    t_start: float = float("nan")  # rig clock (s): its own start or its pressure's first record's (PressureData.eis_time)
 
 
 def spectrum_scatter(Z: np.ndarray) -> float:
@@ -231,7 +231,7 @@ def extract(sd: SessionData) -> Features:
     for pd in sd.pressures:
         if pd.eis is not None and np.size(pd.eis[0]) >= 7:
             f, Z = np.asarray(pd.eis[0], float), np.asarray(pd.eis[1], complex)
-            feats.spectra.append(SpectrumFeature(pd.pressure_kPa, f, Z, spectrum_scatter(Z), pd.eis_t_start))
+            feats.spectra.append(SpectrumFeature(pd.pressure_kPa, f, Z, spectrum_scatter(Z), pd.eis_time))
     ends = [r.t_start + float(r.t[-1] - r.t[0]) for r in records if np.isfinite(r.t_start) and r.t.size]
     feats.t1 = max(ends) if ends else feats.t0 + 1.0
     first_step: set[float | None] = set()

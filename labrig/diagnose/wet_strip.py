@@ -113,35 +113,18 @@ def wet_session(sd: SessionData, x: Callable[[np.ndarray], np.ndarray], k_d: flo
             recs.append(dataclasses.replace(r, d=r.d / (1 - k_d * xr), i=r.i / (1 - k_i * xr)))
         nb = PressureData(b.pressure_kPa, records=recs, eis_t_start=b.eis_t_start)
         if b.eis is not None:
-            nb.eis = (b.eis[0], b.eis[1] * (1 - k_i * float(x(np.array([spectrum_time(b)]))[0])))
+            nb.eis = (b.eis[0], b.eis[1] * (1 - k_i * float(x(np.array([b.eis_time]))[0])))
         nb.sines = [sine_estimate(r.t, r.v, r.i, r.d, float(r.meta["frequency_Hz"]), *sine_cycles(r)) for r in recs if r.kind == RecordKind.STEPPED_SINE]
         add_derived(nb)
         out.append(nb)
     return dataclasses.replace(sd, pressures=out)
 
 
-def spectrum_time(b: PressureData) -> float:
-    """The spectrum's moment: its own start, or (not known) the pressure's first record's."""
-    if np.isfinite(b.eis_t_start):
-        return float(b.eis_t_start)
-    starts = [r.t_start for r in b.records if np.isfinite(r.t_start)]
-    return min(starts) if starts else float("nan")
-
-
 def redried(ctx: Context, x: Callable[[np.ndarray], np.ndarray], k_i: float) -> Context:
     """``ctx`` (on the wet strip's baseline) with its spectra's predictions dried again at their moments."""
-    t_by_p = {}
-    for spec, _ in ctx.spectra:
-        t = spec.t_start if np.isfinite(spec.t_start) else _first_record(ctx, spec.pressure_kPa)
-        t_by_p[spec.pressure_kPa] = t
     out = copy.copy(ctx)
-    out.spectra = [(spec, zb / (1 - k_i * float(x(np.array([t_by_p[spec.pressure_kPa]]))[0]))) for spec, zb in ctx.spectra]
+    out.spectra = [(spec, zb / (1 - k_i * float(x(np.array([spec.t_start]))[0]))) for spec, zb in ctx.spectra]
     return out
-
-
-def _first_record(ctx: Context, p: float | None) -> float:
-    starts = [s.t_start for s in ctx.feats.sines if s.pressure_kPa == p] + [s.t_start for s in ctx.feats.steps if s.pressure_kPa == p]
-    return min(starts) if starts else ctx.feats.t0
 
 
 def correction(ws: WetSession, feats: Features, ext: Extension, params: dict[str, float]) -> dict[str, float] | None:

@@ -79,6 +79,14 @@ class PressureData:
     def of_kind(self, kind: str) -> list[TimeRecord]:
         return [r for r in self.records if r.kind == kind]
 
+    @property
+    def eis_time(self) -> float:
+        """The spectrum's moment: its own start, or (not known) the pressure's first record's (nan: neither)."""
+        if np.isfinite(self.eis_t_start):
+            return float(self.eis_t_start)
+        starts = [r.t_start for r in self.records if np.isfinite(r.t_start)]
+        return min(starts) if starts else float("nan")
+
     def frf_lines(self, source: str = "all") -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
         """The FRF points to fit: (f_Hz, H_disp in m/V, H_cur in A/V, sigma_disp in m/V), ascending f; None if none.
 
