@@ -26,7 +26,8 @@ from labrig.diagnose.features import Features, extract, predict_sines, predict_s
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
-from labrig.diagnose.rivals import DRIVE_PATH, rival_detail
+from labrig.diagnose.drive_line import series_contexts, series_reading
+from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, wet_contexts
@@ -65,6 +66,7 @@ RATIO_FURTHER = 0.8
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
 HARMONIC_BLOCKS = frozenset({"harm_d", "harm_i"})
+LINEAR_BLOCKS = (frozenset({"frf_d", "step_d"}), frozenset({"frf_i", "step_i"}))  # each channel's linear response
 # Families whose forms change these blocks only: where the base misses none of them, no form can lower the held-out
 # error (it is measured on the missed blocks), so only the catalogue's form is fitted, for the record (the mains'
 # harmonics form has 42 amplitudes: ~5 s of a session's fits for nothing)
@@ -345,6 +347,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.03, 6.0])]  # a longer filter of more poles, towards the delay
     if ext.form == "static_map":
         starts += [np.array([0.02, 1.0, 0.0, 1.0]), np.array([0.1, 0.0, -0.2, 1.0])]  # a narrow deep dead zone; clipping
+    if ext.form == "series_element":
+        starts += [np.array([0.0, 30.0]), np.array([30.0, 0.0])]  # a capacitor alone; a resistor alone
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)
@@ -441,6 +445,18 @@ class _Scorer:
             return dataclasses.replace(w, params={**w.params, **corr, "wet_conductance_loss": k_i}, refit=WetRefit(*both))
 
         return refine_loss(corr["wet_conductance_loss"], on_wet)
+
+    def behind_series(self) -> Candidate:
+        """The rival's series element fitted, from the DAQ's and the analyser's reading of it, on the seed-000 fit of
+        the session behind it; where nothing reads it (no spectra, no sines in their band), on this baseline
+        (drive_line.py)."""
+        feats = self.ctx_fit.feats
+        ws = self.wet_session
+        reading = None if ws is None else series_reading(feats, ws.fit_set)
+        both = None if reading is None else series_contexts(ws, feats, *reading, build_context)
+        if both is None:
+            return self.score_form(SERIES_ELEMENT.name, SERIES_ELEMENT)
+        return self.fitted_on(SERIES_ELEMENT.name, dataclasses.replace(SERIES_ELEMENT, start=lambda ctx: np.array(reading)), *both)
 
     def portable(self, name: str) -> tuple[Candidate, tuple[int, bool] | None]:
         """``score`` as a worker sends it back: the form as its index in the family (some forms are closures) and
@@ -554,23 +570,38 @@ class Rival:
                 "instead_of": self.instead_of.name, "its_ratio": self.instead_of.heldout_ratio, "blocks_it_lowers": self.lowered}
 
 
+def _rival_forms(structured: list[str], untouched: list[str]) -> list:
+    """The drive-path rival's forms worth fitting, each where the named cause leaves what that form would explain: a
+    static map where a harmonic block is left where the base put it (a distorted drive shows first as the distortion
+    it adds to both channels; a gain changing with the amplitude the catalogued causes make too), a series element
+    where the base misses both channels' linear response and the named cause leaves all of one channel's where it was
+    (a filter before the strip reaches both channels; the catalogued linear causes act on one channel each)."""
+    forms = [DRIVE_PATH] if set(untouched) & HARMONIC_BLOCKS else []
+    lin = [set(structured) & b for b in LINEAR_BLOCKS]
+    if all(lin) and any(b <= set(untouched) for b in lin):
+        forms.append(SERIES_ELEMENT)
+    return forms
+
+
 def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], accuracy: dict[str, float]) -> Rival | None:
     """The drive-path rival (rivals.py) where it takes the verdict from the named cause: it is significant as an effect
     would be, predicts the held-out half at least as well, and lowers a structured block the named cause leaves where
-    the base put it (the signature: a distorted drive reaches both channels, a catalogued cause only its own). Fitted
-    only where the named cause leaves such a block, and a harmonic block among them: a static map shows first as the
-    distortion it adds to both channels, and what it does besides (a gain that changes with the amplitude) the
-    catalogued causes also do."""
+    the base put it (the signature: a drive changed before the strip reaches both channels, a catalogued cause only its
+    own). Each form is fitted only where the named cause leaves such a block of its kind (``_rival_forms``); of those
+    that take the verdict, the best on the held-out half."""
     if not named or named[0].held is None:
         return None
-    untouched = [k for k in _structured_blocks(base_rms, accuracy) if not _moves(named[0], k, base_rms[k])]
-    if not set(untouched) & HARMONIC_BLOCKS:
-        return None
-    r = scorer.score_form(DRIVE_PATH.name, DRIVE_PATH)
-    if not (r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and r.heldout_ratio <= named[0].heldout_ratio):
-        return None
-    lowered = [k for k in untouched if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
-    return Rival(r, named[0], lowered) if lowered else None
+    structured = _structured_blocks(base_rms, accuracy)
+    untouched = [k for k in structured if not _moves(named[0], k, base_rms[k])]
+    won = []
+    for ext in _rival_forms(structured, untouched):
+        r = scorer.behind_series() if ext is SERIES_ELEMENT else scorer.score_form(ext.name, ext)
+        if not (r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and r.heldout_ratio <= named[0].heldout_ratio):
+            continue
+        lowered = [k for k in untouched if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
+        if lowered:
+            won.append(Rival(r, named[0], lowered))
+    return min(won, key=lambda w: w.fit.heldout_ratio, default=None)
 
 
 def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, Context]:

@@ -20,8 +20,8 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, cosine_harmonics, specimen_for
-from labrig.diagnose.features import predict_step
-from labrig.physics import transfer
+from labrig.diagnose.features import _step_grid, predict_step
+from labrig.physics import timeresp, transfer
 
 _N = 64  # samples per cycle of the map's describing function
 
@@ -70,13 +70,52 @@ DRIVE_PATH = Extension("drive_path", ("dead_zone_V", "depth", "cubic_per_V2", "g
                        "amplifier's crossover or clipping before the strip (outside the catalogue)", form="static_map")
 
 
+def series_element(th, ctx: Context):
+    """The strip behind a series element in the drive line, Z_s(s) = R + S/s (a resistance R, an elastance S = 1/C),
+    with the DAQ recording the drive before it and the analyser's spectra taken on the strip alone: both channels
+    follow v_eff = G(s) v, G = 1 / (1 + Z_s(s) Y(s)), each by the strip's own admittance Y at its pressure. Sines
+    scaled by G at their frequency; steps re-driven at the record's own rate through H G and Y G."""
+    r, el = th
+    p = baseline(ctx)
+    if ctx.sines:
+        s = 2j * np.pi * np.array([x.f for x in ctx.sines])
+        g = 1.0 / (1.0 + (r + el / s) * ctx.Hi)
+        p.Hd, p.Hi = p.Hd * g, p.Hi * g
+    for k, st in enumerate(ctx.steps):
+        if st.fs_full <= 0 or st.v_full.size == 0:
+            continue
+        nfft, sigma, (h, y) = _step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
+        s = sigma + 2j * np.pi * np.fft.rfftfreq(nfft, 1.0 / st.fs_full)
+        g = 1.0 / (1.0 + (r + el / s) * y)
+        d, i = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [h * g, y * g]))
+        p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
+    return p
+
+
+SERIES_ELEMENT = Extension("drive_path", ("series_ohm", "elastance_per_F"), (5.0, 10.0), (0.0, 0.0), (500.0, 1e4), series_element,
+                           "the strip behind a series element in the drive line, R + 1/(C s), the DAQ recording the drive "
+                           "before it: a sense resistor, a DC-blocking capacitor (outside the catalogue)", form="series_element")
+
+# the rival's forms: each fitted where the named cause leaves what that form would explain (engine._rival)
+DRIVE_PATHS = (DRIVE_PATH, SERIES_ELEMENT)
+
+
+def _what(r: dict) -> str:
+    """What the strip saw, by the rival's form and parameters."""
+    q = r["params"]
+    if r["form"] == SERIES_ELEMENT.form:
+        c = "no capacitance" if q["elastance_per_F"] <= 0 else f"{1e3 / q['elastance_per_F']:.3g} mF"
+        return (f"the strip sat behind a series element in the drive line ({q['series_ohm']:.3g} ohm, {c}: a sense resistor "
+                f"or a DC-blocking capacitor, the DAQ recording the drive before it)")
+    return (f"the strip saw a distorted copy of the recorded drive (a dead zone of {1e3 * q['dead_zone_V']:.1f} mV at depth "
+            f"{q['depth']:.2f}, cubic {q['cubic_per_V2']:+.3f}/V^2: an amplifier's crossover or clipping before the strip)")
+
+
 def rival_detail(r: dict) -> dict:
     """The ``residual.where`` entry saying where the drive-path rival sits and what it took the verdict from (``r``:
     the JSON's ``drive_path``)."""
-    z, w, c = (r["params"][k] for k in ("dead_zone_V", "depth", "cubic_per_V2"))
     return {"block": "drive", "level": r["heldout_ratio"], "over_accuracy": r["its_ratio"] / max(r["heldout_ratio"], 1e-12),
-            "detail": f"the strip saw a distorted copy of the recorded drive (a dead zone of {1e3 * z:.1f} mV at depth {w:.2f}, "
-                      f"cubic {c:+.3f}/V^2: an amplifier's crossover or clipping before the strip): it predicts the held-out "
-                      f"half at {r['heldout_ratio']:.3f} of the baseline's error against {r['its_ratio']:.3f} for {r['instead_of']}, "
-                      f"and lowers {', '.join(r['blocks_it_lowers'])}, which {r['instead_of']} leaves where the baseline put it",
+            "detail": f"{_what(r)}: it predicts the held-out half at {r['heldout_ratio']:.3f} of the baseline's error against "
+                      f"{r['its_ratio']:.3f} for {r['instead_of']}, and lowers {', '.join(r['blocks_it_lowers'])}, which "
+                      f"{r['instead_of']} leaves where the baseline put it",
             "blocks": list(r["blocks_it_lowers"])}

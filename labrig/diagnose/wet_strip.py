@@ -77,18 +77,26 @@ class _FeaturesOnly:
     feats: Features  # what a loss reads of its context: the session's clock and charge
 
 
+def paired_sines(feats: Features, pressures: set) -> list[tuple[Any, list]]:
+    """Each spectrum of ``pressures`` with its pressure's stepped sines inside its band (at least MIN_SINES): the
+    analyser's and the DAQ's readings of the same admittance."""
+    out = []
+    for spec in feats.spectra:
+        if spec.pressure_kPa not in pressures:
+            continue
+        ss = [s for s in feats.sines if s.pressure_kPa == spec.pressure_kPa and spec.f.min() <= s.f <= spec.f.max() and abs(s.Hi) > 0]
+        if len(ss) >= MIN_SINES:
+            out.append((spec, ss))
+    return out
+
+
 def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pressures: set) -> float | None:
     """k_i from log(|Y_daq| |Z|) = a_p + log(1 - k_i x(t)) over the stepped sines of ``pressures``, a_p a level per
     pressure (profiled out); |Z| at each sine's frequency from a cubic spline of log |Z| in log f (a straight line
     between the spectrum's points bends with the CPE's curvature, which the sines' order turns into a slope in time).
     None: no spectrum with MIN_SINES sines inside its band, or the loss does not change within a pressure."""
     xs, ys = [], []
-    for spec in feats.spectra:
-        if spec.pressure_kPa not in pressures:
-            continue
-        ss = [s for s in feats.sines if s.pressure_kPa == spec.pressure_kPa and spec.f.min() <= s.f <= spec.f.max() and abs(s.Hi) > 0]
-        if len(ss) < MIN_SINES:
-            continue
+    for spec, ss in paired_sines(feats, pressures):
         o = np.argsort(spec.f)
         lz = CubicSpline(np.log(spec.f[o]), np.log(np.abs(spec.Z[o])))(np.log([s.f for s in ss]))
         ys.append(np.log(np.abs([s.Hi for s in ss])) + lz)
@@ -102,22 +110,30 @@ def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pre
     return float(minimize_scalar(cost, bounds=LOSS_BOUNDS, method="bounded", options={"xatol": 1e-5}).x)
 
 
-def wet_session(sd: SessionData, x: Callable[[np.ndarray], np.ndarray], k_d: float, k_i: float) -> SessionData:
-    """The session as the wet strip would have read it: every sample divided by its loss, each spectrum multiplied
-    (its impedance rises as the conductance falls), the stepped sines' estimates made again."""
+def recorded_anew(sd: SessionData, record: Callable[[Any], Any], eis: Callable[[PressureData], Any] | None = None) -> SessionData:
+    """The session with every record changed by ``record`` (a TimeRecord in, one out) and each pressure's spectrum by
+    ``eis`` (None: kept), the stepped sines' estimates made again from the changed records."""
     out = []
     for b in sd.pressures:
-        recs = []
-        for r in b.records:
-            xr = x(r.t_start + (r.t - r.t[0]))
-            recs.append(dataclasses.replace(r, d=r.d / (1 - k_d * xr), i=r.i / (1 - k_i * xr)))
+        recs = [record(r) for r in b.records]
         nb = PressureData(b.pressure_kPa, records=recs, eis_t_start=b.eis_t_start)
         if b.eis is not None:
-            nb.eis = (b.eis[0], b.eis[1] * (1 - k_i * float(x(np.array([b.eis_time]))[0])))
+            nb.eis = b.eis if eis is None else eis(b)
         nb.sines = [sine_estimate(r.t, r.v, r.i, r.d, float(r.meta["frequency_Hz"]), *sine_cycles(r)) for r in recs if r.kind == RecordKind.STEPPED_SINE]
         add_derived(nb)
         out.append(nb)
     return dataclasses.replace(sd, pressures=out)
+
+
+def wet_session(sd: SessionData, x: Callable[[np.ndarray], np.ndarray], k_d: float, k_i: float) -> SessionData:
+    """The session as the wet strip would have read it: every sample divided by its loss, each spectrum multiplied
+    (its impedance rises as the conductance falls), the stepped sines' estimates made again."""
+
+    def record(r):
+        xr = x(r.t_start + (r.t - r.t[0]))
+        return dataclasses.replace(r, d=r.d / (1 - k_d * xr), i=r.i / (1 - k_i * xr))
+
+    return recorded_anew(sd, record, lambda b: (b.eis[0], b.eis[1] * (1 - k_i * float(x(np.array([b.eis_time]))[0]))))
 
 
 def redried(ctx: Context, x: Callable[[np.ndarray], np.ndarray], k_i: float) -> Context:
