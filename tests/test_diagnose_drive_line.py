@@ -96,10 +96,11 @@ def _held(**levels):
 
 def test_the_series_element_is_fitted_only_where_one_channel_is_left():
     """The forms' gate: a harmonic block left opens the static map; both channels' linear response missed and one
-    of them left entirely open the series element; one channel alone missed (a catalogued linear cause) neither."""
+    of those blocks left open the series element; one channel alone missed (a catalogued linear cause) neither."""
     assert engine._rival_forms(["frf_d", "step_d", "frf_i", "step_i"], ["frf_i", "step_i"]) == [SERIES_ELEMENT]
     assert engine._rival_forms(["frf_d", "step_d", "frf_i"], ["frf_i"]) == [SERIES_ELEMENT]
-    assert engine._rival_forms(["frf_d", "frf_i", "step_i"], ["frf_i"]) == []  # the current's step moved
+    assert engine._rival_forms(["frf_d", "frf_i", "step_i"], ["frf_i"]) == [SERIES_ELEMENT]  # the current's step moved
+    assert engine._rival_forms(["frf_d", "frf_i", "step_i"], []) == []  # the named cause moves every block
     assert engine._rival_forms(["frf_d", "step_d"], ["frf_d", "step_d"]) == []  # the current not missed at all
     assert engine._rival_forms(["frf_i", "harm_d", "harm_i"], ["harm_d"]) == [DRIVE_PATH]
 

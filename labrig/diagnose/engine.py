@@ -574,11 +574,11 @@ def _rival_forms(structured: list[str], untouched: list[str]) -> list:
     """The drive-path rival's forms worth fitting, each where the named cause leaves what that form would explain: a
     static map where a harmonic block is left where the base put it (a distorted drive shows first as the distortion
     it adds to both channels; a gain changing with the amplitude the catalogued causes make too), a series element
-    where the base misses both channels' linear response and the named cause leaves all of one channel's where it was
-    (a filter before the strip reaches both channels; the catalogued linear causes act on one channel each)."""
+    where the base misses both channels' linear response and the named cause leaves one of those blocks where it was (a
+    filter before the strip reaches both channels; the catalogued linear causes act on one channel each)."""
     forms = [DRIVE_PATH] if set(untouched) & HARMONIC_BLOCKS else []
     lin = [set(structured) & b for b in LINEAR_BLOCKS]
-    if all(lin) and any(b <= set(untouched) for b in lin):
+    if all(lin) and set(untouched) & set().union(*lin):
         forms.append(SERIES_ELEMENT)
     return forms
 
