@@ -9,6 +9,7 @@ import click
 
 from labrig.analysis import batch, compute_diagnosis, run_diagnosis, store_diagnosis
 from labrig.cli.common import exit_code, print_json, print_outcomes, scheduler_option
+from labrig.diagnose.verdict import where_text
 
 
 def summary(out: dict[str, Any]) -> None:
@@ -23,7 +24,7 @@ def summary(out: dict[str, Any]) -> None:
     else:
         click.echo("verdict: unexplained -- structured residual that no catalogued extension removes")
     for w in out.get("residual", {}).get("where", []):
-        click.echo(f"  misfit in {w['block']}: level {w['level']:.3g} ({w['over_accuracy']:.2f} x its attainable accuracy), {w['detail']}")
+        click.echo(f"  misfit in {where_text(w)}")
     click.echo(f"{'candidate':20s} {'DeltaBIC':>10s} {'held-out NRMSE':>15s} {'ratio':>7s}")
     for c in out["candidates"]:
         click.echo(f"{c['name']:20s} {c['delta_bic']:10.1f} {c['heldout_nrmse']:15.4g} {c['heldout_ratio']:7.3f}")

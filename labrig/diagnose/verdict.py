@@ -62,6 +62,17 @@ def _pressure_label(p: float | None) -> str:
     return "no pressure" if p is None else f"{p:g} kPa"
 
 
+# ``residual.where`` entries that are findings, not a block's residual: their level is not in units of an accuracy
+FINDINGS = frozenset({"drive", "clock", "recording"})
+
+
+def where_text(w: dict[str, Any], accuracy: str = "its attainable accuracy") -> str:
+    """One ``residual.where`` entry in words: a block's level over its accuracy and where it sits, or a finding."""
+    if w["block"] in FINDINGS:
+        return f"{w['block']}: {w['detail']}"
+    return f"{w['block']}: level {w['level']:.3g} ({w['over_accuracy']:.2f} x {accuracy}), {w['detail']}"
+
+
 def structured(levels: dict[str, float], accuracy: dict[str, float]) -> dict[str, float]:
     """The blocks whose level exceeds STRUCTURE_MARGIN x their attainable accuracy, as level / accuracy."""
     out = {k: v / accuracy.get(k, 1.0) for k, v in levels.items()}

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from labrig.diagnose.verdict import where_text
 from labrig.report import figures_diag as fd
 from labrig.report import html as h
 from labrig.report.data import ReportData
@@ -55,7 +56,7 @@ def _verdict(d: dict) -> str:
         text += f" Form found: {d['extended']['form']}."
     where = (d.get("residual") or {}).get("where") or []
     if where:  # where the misfit the verdict leaves sits (issue 12): block, band, harmonic order or record time
-        text += " Misfit left: " + "; ".join(f"{w['block']} at {h.fmt(w['over_accuracy'], 2)} x its accuracy, {w['detail']}" for w in where) + "."
+        text += " Misfit left: " + "; ".join(where_text(w, "its accuracy") for w in where) + "."
     cause = h.esc(d.get("cause") or "")
     return f'<p class="verdict" data-verdict="{h.esc(v)}" data-cause="{cause}">{h.esc(text)}</p>'
 
