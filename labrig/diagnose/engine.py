@@ -133,9 +133,8 @@ def _measured_sines(ctx: Context) -> tuple:
         sd = np.array([s.est.disp_noise for s in ctx.sines])
         si = np.array([s.est.cur_noise for s in ctx.sines])
         frf = tuple((key, me, _frf_sigma(me, sg), np.concatenate((np.abs(me), np.abs(me)))) for key, me, sg in (("frf_d", Hd_m, sd), ("frf_i", Hi_m, si)))
-        floor = recording_floor(ctx.sines)
         harm = tuple((key, which, np.array([[s.harm(which, 2), s.harm(which, 3)] for s in ctx.sines]),
-                      _harm_sigma(rel_noise[:, None], floor).ravel())
+                      np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1).ravel())
                      for key, which, rel_noise in (("harm_d", "d", sd / np.abs(Hd_m)), ("harm_i", "i", si / np.abs(Hi_m))))
         return frf, harm, _force_rel(ctx)
 
@@ -213,27 +212,8 @@ def _frf_sigma(measured: np.ndarray, noise: np.ndarray) -> np.ndarray:
     return np.sqrt(np.nan_to_num(noise, nan=0.0) ** 2 + (FRF_FLOOR * np.abs(measured)) ** 2)
 
 
-def recording_floor(sines) -> np.ndarray:
-    """Per sine record, (n, 2): the recorded drive's own 2nd and 3rd harmonics relative to its fundamental, beyond
-    its estimate's noise. The DAQ's
-    output is a sine pure to the estimates' noise (3e-5, as the responses' ``HARM_FLOOR``); harmonics the record shows
-    in it are the recording chain's (a logger compressing its rows, a coarse converter, a resampler: each channel of
-    the record carries them at a like relative level; a swinging-door historian, 3-5e-4 at 3f) or a distortion of the
-    drive itself, which the responses carry through the strip's linear transfer. Neither is the strip's nonlinearity:
-    a response's harmonic is judged against it in quadrature with its noise (docs/diagnosis.md, "The recording's
-    harmonic floor")."""
-    out = np.zeros((len(sines), 2))
-    for j, s in enumerate(sines):
-        v = np.asarray(s.est.drive)
-        if v.size >= 3 and abs(v[0]) > 0:
-            out[j] = np.abs(v[1:3] / v[0])
-    # what the estimate's own noise puts there (HARM_FLOOR, already counted) taken out in quadrature: the excess is the
-    # recording's or the drive's
-    return np.sqrt(np.maximum(out**2 - HARM_FLOOR**2, 0.0))
-
-
-def _harm_sigma(rel_noise: np.ndarray, floor: np.ndarray | float = 0.0) -> np.ndarray:
-    return np.sqrt(np.nan_to_num(rel_noise, nan=0.0) ** 2 + HARM_FLOOR**2 + np.square(floor))
+def _harm_sigma(rel_noise: np.ndarray) -> np.ndarray:
+    return np.sqrt(np.nan_to_num(rel_noise, nan=0.0) ** 2 + HARM_FLOOR**2)
 
 
 def _step_sigma(noise: float, rms: float) -> float:
@@ -261,8 +241,7 @@ def noise_levels(ctx: Context) -> dict[str, float]:
             chi = np.where(dof > 2, np.sqrt(dof / np.maximum(dof - 2, 1e-9)), 2.0)
             out[key] = rms(own / np.hypot(n / chi, FRF_FLOOR * np.abs(me)))
             rel = n / np.abs(me)
-            floor = recording_floor(ctx.sines)
-            out["harm_" + key[-1]] = rms(np.nan_to_num(own[:, None] / np.abs(me)[:, None] / _harm_sigma((rel / chi)[:, None], floor)))
+            out["harm_" + key[-1]] = rms(np.nan_to_num(own / np.abs(me) / np.hypot(rel / chi, HARM_FLOOR)))
         out["force"] = 1.0  # its unit is the indicator's counts alone
     for key, attr in (("step_d", "d"), ("step_i", "i")):
         lv = [getattr(st, f"noise_{attr}") / _step_sigma(getattr(st, f"noise_{attr}"), float(np.sqrt(np.mean(st.observed(getattr(st, attr)) ** 2))) or 1.0)
