@@ -1,11 +1,13 @@
-"""A channel held at the end of its range (labrig/diagnose/clipping.py): the test on synthetic readings of every shape
-it must tell apart. End to end (a drive monitor clipping on the 1 V records of the suite's clean sweep, diagnosed from
+"""A channel held at the end of its range or carried round it (labrig/diagnose/clipping.py): the tests on synthetic
+readings of every shape they must tell apart. End to end (a drive monitor clipping on the 1 V records of the suite's clean sweep, diagnosed from
 the command line): tests/test_diagnose_injected.py, which exports that sweep once for its probes."""
 
 import numpy as np
 import pytest
 
-from labrig.diagnose.clipping import CLIP_RUN, channel_clip
+from labrig.diagnose.clipping import CLIP_RUN, WRAP_SHARE, channel_clip, largest_jump, wrapping
+from labrig.estimate.session_data import PressureData, SessionData, TimeRecord
+from labrig.records import RecordKind
 
 CODE = 2.0 / 65536  # a 16-bit converter on +-1 V
 
@@ -38,3 +40,45 @@ def test_smooth_tops_noise_and_setpoints_are_not_clipping(rng):
     assert not channel_clip(np.where(np.arange(30000) >= 15000, 1.0, 0.0))["clipped"]
     # a noisy plateau below the range's end
     assert not channel_clip(_read(np.where(np.arange(30000) >= 15000, 1.0, 0.0), 2e-4, rng, top=1.05))["clipped"]
+
+
+def _step(fs: float = 500.0, peak: float = 8.8e-3, tau: float = 0.15, noise: float = 2e-7, rng=None):
+    """A 1 V step record at ``fs``: 1 s at rest, 30 s on, 30 s off; the displacement rising and falling with ``tau``,
+    the current a spike at each edge decaying with 0.05 s."""
+    rng = rng or np.random.default_rng(3)
+    t = np.arange(int(61 * fs)) / fs
+    v = np.where((t >= 1.0) & (t < 31.0), 1.0, 0.0)
+    on = np.where(t >= 1.0, 1 - np.exp(-np.clip(t - 1.0, 0, None) / tau), 0.0)
+    off = np.where(t >= 31.0, 1 - np.exp(-np.clip(t - 31.0, 0, None) / tau), 0.0)
+    d = peak * (on - off) + noise * rng.standard_normal(t.size)
+    spike = lambda t0: np.where(t >= t0, np.exp(-np.clip(t - t0, 0, None) / 0.05), 0.0)  # noqa: E731
+    i = 5e-3 * (spike(1.0) - spike(31.0)) + 1e-6 * rng.standard_normal(t.size)
+    return t, v, i, d
+
+
+def _wrapped(x: np.ndarray, count: float) -> np.ndarray:
+    """``x`` read through a signed 16-bit register of ``count`` per code: carried round at +-32768 codes."""
+    codes = np.round(x / count).astype(np.int64)
+    return (((codes + 32768) % 65536) - 32768) * count
+
+
+def test_a_reading_carried_round_its_register_is_found_and_a_strips_response_is_not():
+    """A laser read through an int16 register of 0.1 um: the 8.8 mm step wraps at 3.28 mm, a jump of the record's
+    whole span in one sample. The clean step, its current's spike at the edges, and a slow record whose whole rise
+    falls within a sample of the edge do not."""
+    t, v, i, d = _step()
+    share, k = largest_jump(_wrapped(d, 1e-7), v)
+    assert share == pytest.approx(1.0, abs=1e-3) and not 480 <= k <= 520  # within the plateau's rise, not at the edge
+    assert largest_jump(d, v)[0] < 0.02 and largest_jump(i, v)[0] < 0.02
+    ts, vs, i_s, ds = _step(fs=5.0, tau=0.05)
+    assert largest_jump(ds, vs)[0] < WRAP_SHARE  # the rise within the edge's samples
+
+    def session(wrap: bool, records: int) -> SessionData:
+        recs = [TimeRecord(f"step_{k}", RecordKind.STEP, {}, t, v, i, _wrapped(d, 1e-7) if wrap else d, t_start=100.0 * k)
+                for k in range(records)]
+        return SessionData("s.h5", {}, [PressureData(500.0, records=recs)])
+
+    w = wrapping(session(True, 2), 2)
+    assert w["flagged"] and w["channels"] == ["displacement"] and len(w["records"]["displacement"]) == 2
+    assert not wrapping(session(True, 1), 2)["flagged"]  # one record's event: a knock, not the recording
+    assert not wrapping(session(False, 3), 2)["flagged"]

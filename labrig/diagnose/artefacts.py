@@ -54,7 +54,7 @@ from scipy.ndimage import median_filter
 
 from labrig.diagnose import spells
 from labrig.diagnose.arming import ARMING_Z, arming
-from labrig.diagnose.clipping import CLIP_RUN, UNITS, clipping, run_lengths
+from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_lengths, wrapping
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
@@ -357,16 +357,18 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["shifts"] = _timed(per, "shift", spells.SHIFT_Z)
     out["spell_power"], out["shift_z"] = spells.SPELL_POWER, spells.SHIFT_Z
     out["clipped"] = clipping(sd, MIN_RECORDS)
+    out["wrapped"] = wrapping(sd, MIN_RECORDS)
     out["arming"] = arming(sd, MIN_RECORDS)
     out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
-                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["arming"]["flagged"])
+                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["wrapped"]["flagged"] or out["arming"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "wander": max(wander, default=0.0),
                   "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0),
                   "spell": _second(per, "spell"), "shift": _second(per, "shift"),
-                  "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"]}
+                  "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"],
+                  "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0}
     return out
 
 
@@ -383,7 +385,7 @@ def level(a: dict[str, Any]) -> float:
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
-                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z))
+                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE))
 
 
 def detail(a: dict[str, Any]) -> str:
@@ -395,6 +397,11 @@ def detail(a: dict[str, Any]) -> str:
                                f"{len(c['records'][ch])} records ({', '.join(c['records'][ch][:4])}{', ...' if len(c['records'][ch]) > 4 else ''})"
                                for ch in c["channels"])
                      + f", up to {c['longest_run']} readings in a row: a clipped channel, whose features are not the signal")
+    if a.get("wrapped", {}).get("flagged"):
+        w = a["wrapped"]
+        parts.append("; ".join(f"the {ch} reading jumps by its record's whole span in one sample, away from the drive's edges, in "
+                               f"{len(w['records'][ch])} records ({', '.join(w['records'][ch][:4])}{', ...' if len(w['records'][ch]) > 4 else ''})"
+                               for ch in w["channels"]) + ": a reading carried round its converter's or register's range, whose features are not the signal")
     if a["bursts"]["flagged"]:
         b = a["bursts"]
         parts.append(f"the {' and '.join(b['channels'])} reading leaves its signal for {BURST_RUN}+ samples ({b['runs']} times in "

@@ -1,4 +1,4 @@
-"""Readings held at the end of their range: a channel that clips.
+"""Readings held at the end of their range (a channel that clips) or carried round to its other end (one that wraps).
 
 A converter or a sensor driven past its range returns its last code for as long as the signal stays beyond it: the
 drive's monitor on a DAQ range a little smaller than the amplifier's output, a current amplifier that saturates, a
@@ -13,6 +13,12 @@ the next value inward (a histogram's spike at its edge: a smooth top, a sine's a
 value's count there), and a channel that moves with its noise elsewhere (``MOVING`` of its readings differ from the one
 before: a noise-free setpoint stored as the drive, flat on its plateau, is no clipped measurement). Flagged in
 ``MIN_RECORDS`` records or more (artefacts.py), on one channel.
+
+A reading carried over a counter's or a register's range comes back at the other end of it (a laser's int16 register
+read over Modbus, a 16-bit counter): the record jumps by the whole range in one sample and goes on from there. No
+strip's response does that: the displacement and the current move continuously except where the drive switches. The
+test, per record on the current and the displacement: one sample's change, away from the drive's edges (``EDGE``
+samples either side of a change of the recorded drive), of at least ``WRAP_SHARE`` of the record's whole span.
 """
 
 from __future__ import annotations
@@ -32,6 +38,11 @@ MOVING = 0.2  # the share of readings away from the extremes that differ from th
 CHANNELS = {"drive": "v", "current": "i", "displacement": "d"}
 UNITS = {"drive": "V", "current": "A", "displacement": "m"}
 MIN_SAMPLES = 50
+# A wrap changes the reading by the whole range in one sample (fresh17's register: 6.55 mm of a record spanning 6.55 mm);
+# a strip's response at most by what it moves in a sample after an edge (the tuning set's sessions: at most
+# WRAP_TUNING_MAX of the record's span away from the edges, docs/diagnosis.md "A reading carried round its range")
+WRAP_SHARE = 0.5
+EDGE = 2  # samples either side of a drive change: the current's spike and a slow record's rise live there
 
 
 def run_lengths(mask: np.ndarray) -> np.ndarray:
@@ -74,6 +85,37 @@ def record_clips(r: TimeRecord) -> dict[str, dict[str, Any]]:
         if c is not None and c["clipped"]:
             out[ch] = {**c, "record": r.name}
     return out
+
+
+def largest_jump(x: np.ndarray, v: np.ndarray) -> tuple[float, int]:
+    """(the largest one-sample change of ``x`` away from the drive's edges over the record's span, its index); (0, -1)
+    for a record too short or flat."""
+    x = np.asarray(x, float)
+    if x.size < MIN_SAMPLES or not np.all(np.isfinite(x)) or np.ptp(x) == 0:
+        return 0.0, -1
+    dv = np.abs(np.diff(np.asarray(v, float)))
+    edge = np.flatnonzero(dv > 1e-3 * max(float(dv.max(initial=0.0)), 1e-12)) if dv.size and dv.max() > 0 else np.zeros(0, int)
+    near = np.zeros(x.size - 1, bool)
+    for e in edge:
+        near[max(e - EDGE, 0): e + EDGE + 1] = True
+    jump = np.where(near, 0.0, np.abs(np.diff(x)))
+    k = int(np.argmax(jump))
+    return float(jump[k] / np.ptp(x)), k
+
+
+def wrapping(sd: SessionData, min_records: int) -> dict[str, Any]:
+    """Per channel (current, displacement), the records that jump by ``WRAP_SHARE`` of their span in one sample away
+    from the drive's edges; flagged where one channel does in ``min_records`` records or more."""
+    per: dict[str, list[str]] = {}
+    worst = 0.0
+    for r in sd.all_records():
+        for ch in ("current", "displacement"):
+            share, k = largest_jump(getattr(r, CHANNELS[ch]), r.v)
+            worst = max(worst, share)
+            if share >= WRAP_SHARE:
+                per.setdefault(ch, []).append(r.name)
+    flagged = sorted(ch for ch, v in per.items() if len(v) >= min_records)
+    return {"channels": flagged, "records": per, "largest_share": worst, "wrap_share": WRAP_SHARE, "flagged": bool(flagged)}
 
 
 def clipping(sd: SessionData, min_records: int) -> dict[str, Any]:

@@ -699,9 +699,9 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
         verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
         named, accepted = [], []
-    elif recording["clipped"]["flagged"]:
-        # a channel held at the end of its range: the features read there are the converter's, not the strip's, and a
-        # cause named from them would be named from the clipping (clipping.py)
+    elif recording["clipped"]["flagged"] or recording["wrapped"]["flagged"]:
+        # a channel held at the end of its range or carried round it: the features read there are the converter's, not
+        # the strip's, and a cause named from them would be named from the clipping or the wrap (clipping.py)
         verdict, cause, confidence = "unexplained", None, 1.0
         named, accepted = [], []
     elif named:
