@@ -153,7 +153,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)",
           "fresh15": "fresh15 held-out set (diagnosed once unseen at 6439289; seen since)",
           "fresh16": "fresh16 held-out set (diagnosed once unseen at 6a827f8; seen since)",
-          "fresh17": "fresh17 held-out set (unseen)"}
+          "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

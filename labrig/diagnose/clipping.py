@@ -39,8 +39,9 @@ CHANNELS = {"drive": "v", "current": "i", "displacement": "d"}
 UNITS = {"drive": "V", "current": "A", "displacement": "m"}
 MIN_SAMPLES = 50
 # A wrap changes the reading by the whole range in one sample (fresh17's register: 6.55 mm of a record spanning 6.55 mm);
-# a strip's response at most by what it moves in a sample after an edge (the tuning set's sessions: at most
-# WRAP_TUNING_MAX of the record's span away from the edges, docs/diagnosis.md "A reading carried round its range")
+# a strip's response at most by what it moves in a sample after an edge (away from the edges: at most 0.070 of the
+# record's span on the tuning set's 40 sessions, 0.053 on every other cached session but a drive on its own clock,
+# 0.33; docs/diagnosis.md "A reading carried round its range"). A physical bound, not a tuned one
 WRAP_SHARE = 0.5
 EDGE = 2  # samples either side of a drive change: the current's spike and a slow record's rise live there
 
