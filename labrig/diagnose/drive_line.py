@@ -26,7 +26,9 @@ from labrig.diagnose.features import Features
 from labrig.diagnose.wet_strip import WetSession, paired_sines, recorded_anew
 from labrig.estimate.session_data import SessionData
 from labrig.fit.seed000 import fit_seed000
-from labrig.records import SINE_KINDS
+from labrig.records import SINE_KINDS, RecordKind
+
+PERIODIC = (*SINE_KINDS, RecordKind.MULTISINE)  # records driven from their first sample, periodic: the mean is the offset
 
 
 def series_reading(feats: Features, pressures: set) -> tuple[float, float] | None:
@@ -51,9 +53,10 @@ def series_reading(feats: Features, pressures: set) -> tuple[float, float] | Non
 
 def _charge(rec) -> np.ndarray:
     """The charge through the strip since the record's start (C): the current less its offset (a sine's mean over the
-    record; another record's level at rest before its drive), which the amplifier's zero sets, not the strip."""
+    record, a multisine's over its periods; another record's level at rest before its drive), which the amplifier's
+    zero sets, not the strip."""
     i = np.asarray(rec.i, float)
-    if rec.kind in SINE_KINDS:
+    if rec.kind in PERIODIC:
         i0 = float(np.mean(i))
     else:
         v = np.abs(np.asarray(rec.v, float))
