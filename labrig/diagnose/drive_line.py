@@ -18,6 +18,8 @@ channels, as the DAQ read them, from the strip behind the element (``series_cont
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 from scipy.integrate import cumulative_trapezoid
 from scipy.interpolate import CubicSpline
@@ -67,8 +69,6 @@ def _charge(rec) -> np.ndarray:
 
 def behind_series(sd: SessionData, r: float, el: float) -> SessionData:
     """The session with each record's drive the strip's own, v - R i - q/C, the sines' estimates made again."""
-    import dataclasses
-
     return recorded_anew(sd, lambda rec: dataclasses.replace(rec, v=rec.v - r * rec.i - el * _charge(rec)))
 
 
