@@ -3,7 +3,8 @@ validation set's injector (bench/inject.py), imported and diagnosed as a user wo
 (every form x three seeds, structures outside the catalogue, protocol variants) is run by bench/diagnose.py, and the
 issue's further probes (an exponential electrolysis branch, hum on the drive monitor) by bench/diagnose_probes.py;
 here, on the suite's clean seed-1 sweep exported once: the structure outside the catalogue, a moment of the step
-records the whole record's RMS dilutes (step_windows.py), and a drive monitor that clips (clipping.py)."""
+records the whole record's RMS dilutes (step_windows.py), a drive monitor that clips and a laser whose register wraps
+(clipping.py)."""
 
 import json
 
@@ -129,3 +130,23 @@ def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_pat
     assert all("1V" in name for name in clipped["records"]["drive"])
     top = out["residual"]["where"][0]
     assert top["block"] == "recording" and "drive reading held at -1.01 V, 1.01 V" in top["detail"]  # the tops and troughs
+
+
+def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(exported, tmp_path, capsys):
+    """clipping.wrapping end to end: the laser read over a signed int16 register of 0.1 um, its 8.8 mm steps carried
+    round at +-3.28 mm. Without the test a wrapped step reads as a compressed large deflection or a relaxation."""
+    s = inject.read_export(exported / "clean", "paper")
+    inject.v_two_pressures(s)
+    for r in s.series():
+        codes = np.round(r.cols["disp_m"] / 1e-7).astype(np.int64)
+        r.cols["disp_m"] = (((codes + 32768) % 65536) - 32768) * 1e-7
+    h5 = tmp_path / "wrapped.h5"
+    assert main(["import", str(inject.write_import(s, tmp_path / "wrapped")), "--out", str(h5)]) == 0
+    capsys.readouterr()
+    assert main(["diagnose", str(h5), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    out = out[0] if isinstance(out, list) else out
+    assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
+    wrapped = out["recording"]["wrapped"]
+    assert wrapped["flagged"] and wrapped["channels"] == ["displacement"] and len(wrapped["records"]["displacement"]) == 2
+    assert out["residual"]["where"][0]["block"] == "recording" and "whole span in one sample" in out["residual"]["where"][0]["detail"]
