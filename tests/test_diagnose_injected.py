@@ -150,3 +150,34 @@ def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(
     wrapped = out["recording"]["wrapped"]
     assert wrapped["flagged"] and wrapped["channels"] == ["displacement"] and len(wrapped["records"]["displacement"]) == 2
     assert out["residual"]["where"][0]["block"] == "recording" and "whole span in one sample" in out["residual"]["where"][0]["detail"]
+
+
+def test_a_capacitor_in_the_drive_line_takes_the_verdict_from_a_relaxation(exported, tmp_path, capsys):
+    """rivals.SERIES_ELEMENT and drive_line.py end to end: a 83 mF capacitor between the recorded drive and the strip
+    (each record from rest, the strip's own admittance at its pressure), the analyser wired at the strip. The
+    capacitor's divider relaxes the steps, which a relaxation takes (0.15); the element read off the DAQ against the
+    analyser and refitted behind takes the verdict from it (0.03), its capacitance found. (At 0.2 F the sines'
+    current sits near the structure margin, 1.5x its accuracy, from one run of the simulated bench to the next: the
+    element's gate needs both channels' linear response missed.)"""
+    from labrig.physics import presets, timeresp, transfer
+
+    s = inject.read_export(exported / "clean", "paper")
+    inject.v_two_pressures(s)
+    strip = presets.get("paper")
+    for r in s.series():
+        sp = strip.specimen(float(r.entry["pressure_kPa"]))
+        divider = lambda z, sp=sp: 1 / (1 + 12.0 / z * transfer.admittance_tf(z, sp))  # noqa: E731  (1/C = 12 F^-1)
+        for col in ("i_A", "disp_m"):
+            x = r.cols[col]
+            r.cols[col] = x[0] + timeresp.simulate(divider, x - x[0], r.fs)
+    h5 = tmp_path / "capacitor.h5"
+    assert main(["import", str(inject.write_import(s, tmp_path / "capacitor")), "--out", str(h5)]) == 0
+    capsys.readouterr()
+    assert main(["diagnose", str(h5), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    out = out[0] if isinstance(out, list) else out
+    assert (out["verdict"], out["cause"]) == ("unexplained", None), (out["drive_path"], out["candidates"][:2], out["baseline"]["missed"])
+    rival = out["drive_path"]
+    assert rival["form"] == "series_element" and rival["heldout_ratio"] < rival["its_ratio"]
+    assert rival["params"]["elastance_per_F"] == pytest.approx(12.0, rel=0.1) and rival["params"]["series_ohm"] < 0.5
+    assert out["residual"]["where"][0]["block"] == "drive" and "series element" in out["residual"]["where"][0]["detail"]
