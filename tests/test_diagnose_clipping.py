@@ -64,7 +64,7 @@ def _wrapped(x: np.ndarray, count: float) -> np.ndarray:
 
 def test_a_reading_carried_round_its_register_is_found_and_a_strips_response_is_not():
     """A laser read through an int16 register of 0.1 um: the 8.8 mm step wraps at 3.28 mm, a jump of the record's
-    whole span in one sample. The clean step, its current's spike at the edges, and a slow record whose whole rise
+    whole span in one sample, and stays there. The clean step, its current's spike at the edges, and a slow record whose whole rise
     falls within a sample of the edge do not."""
     t, v, i, d = _step()
     share, k = largest_jump(_wrapped(d, 1e-7), v)
@@ -72,6 +72,12 @@ def test_a_reading_carried_round_its_register_is_found_and_a_strips_response_is_
     assert largest_jump(d, v)[0] < 0.02 and largest_jump(i, v)[0] < 0.02
     ts, vs, i_s, ds = _step(fs=5.0, tau=0.05)
     assert largest_jump(ds, vs)[0] < WRAP_SHARE  # the rise within the edge's samples
+    noisy = v + 1e-3 * np.random.default_rng(5).standard_normal(v.size)  # a measured drive: only its switches are edges
+    assert largest_jump(_wrapped(d, 1e-7), noisy)[0] == pytest.approx(1.0, abs=1e-3)
+    dropout = d.copy()
+    dropout[20000:20002] = 0.0  # the laser lost for two samples, back at once: not a wrap
+    assert largest_jump(dropout, v)[0] < WRAP_SHARE
+    assert largest_jump(d, np.where(np.arange(v.size) == 9, np.nan, v)) == (0.0, -1)
 
     def session(wrap: bool, records: int) -> SessionData:
         recs = [TimeRecord(f"step_{k}", RecordKind.STEP, {}, t, v, i, _wrapped(d, 1e-7) if wrap else d, t_start=100.0 * k)

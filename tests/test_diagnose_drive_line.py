@@ -59,8 +59,8 @@ def test_the_session_is_recorded_anew_with_the_strips_own_drive():
     out = behind_series(sd, 10.0, 5.0).pressures[0]
     np.testing.assert_allclose(out.eis[1], sd.pressures[0].eis[1])  # the analyser is at the strip: unchanged
     got = out.records[0].v
-    assert got[t < 1.0] == pytest.approx(v[t < 1.0] - 10.0 * i[t < 1.0], abs=1e-12)
-    assert got[-1] == pytest.approx(1.0 - 10.0 * i[-1] - 5.0 * 1e-3 * 9.0, rel=1e-3)
+    assert got[t < 1.0] == pytest.approx(0.0, abs=1e-12)  # at rest: no current through the element but the zero's
+    assert got[-1] == pytest.approx(1.0 - 10.0 * 1e-3 - 5.0 * 1e-3 * 9.0, rel=1e-3)
     f, t = 2.0, np.arange(1000) / 100.0  # 20 whole cycles
     sine = TimeRecord("sine", RecordKind.STEPPED_SINE, {"frequency_Hz": f}, t, np.sin(2 * np.pi * f * t),
                       1e-3 + 1e-3 * np.cos(2 * np.pi * f * t), 1e-3 * np.sin(2 * np.pi * f * t - 0.3), t_start=20.0,

@@ -149,7 +149,7 @@ def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
     wrapped = out["recording"]["wrapped"]
     assert wrapped["flagged"] and wrapped["channels"] == ["displacement"] and len(wrapped["records"]["displacement"]) == 2
-    assert out["residual"]["where"][0]["block"] == "recording" and "whole span in one sample" in out["residual"]["where"][0]["detail"]
+    assert out["residual"]["where"][0]["block"] == "recording" and "span or more in one sample" in out["residual"]["where"][0]["detail"]
 
 
 def test_a_capacitor_in_the_drive_line_takes_the_verdict_from_a_relaxation(exported, tmp_path, capsys):

@@ -399,7 +399,7 @@ def detail(a: dict[str, Any]) -> str:
                      + f", up to {c['longest_run']} readings in a row: a clipped channel, whose features are not the signal")
     if a.get("wrapped", {}).get("flagged"):
         w = a["wrapped"]
-        parts.append("; ".join(f"the {ch} reading jumps by its record's whole span in one sample, away from the drive's edges, in "
+        parts.append("; ".join(f"the {ch} reading jumps by half its record's span or more in one sample and stays there, away from the drive's edges, in "
                                f"{len(w['records'][ch])} records ({', '.join(w['records'][ch][:4])}{', ...' if len(w['records'][ch]) > 4 else ''})"
                                for ch in w["channels"]) + ": a reading carried round its converter's or register's range, whose features are not the signal")
     if a["bursts"]["flagged"]:

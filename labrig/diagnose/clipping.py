@@ -17,8 +17,9 @@ before: a noise-free setpoint stored as the drive, flat on its plateau, is no cl
 A reading carried over a counter's or a register's range comes back at the other end of it (a laser's int16 register
 read over Modbus, a 16-bit counter): the record jumps by the whole range in one sample and goes on from there. No
 strip's response does that: the displacement and the current move continuously except where the drive switches. The
-test, per record on the current and the displacement: one sample's change, away from the drive's edges (``EDGE``
-samples either side of a change of the recorded drive), of at least ``WRAP_SHARE`` of the record's whole span.
+test, per step record on the current and the displacement: one sample's change, away from the drive's edges (``EDGE``
+samples either side of a switch of the recorded drive), of at least ``WRAP_SHARE`` of the record's whole span, the
+reading staying at its new level for ``KEEPS`` samples (a dropout to a sentinel comes back at once).
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from typing import Any
 import numpy as np
 
 from labrig.estimate.session_data import SessionData, TimeRecord
+from labrig.records import RecordKind
 
 # Set on the tuning set: a smooth signal's top, where the code is coarser than the noise, held one value for at most
 # 7 readings in a row and 7 times the next value's count on any record of its 40 sessions (the held-out sets fresh12 and
@@ -39,11 +41,12 @@ CHANNELS = {"drive": "v", "current": "i", "displacement": "d"}
 UNITS = {"drive": "V", "current": "A", "displacement": "m"}
 MIN_SAMPLES = 50
 # A wrap changes the reading by the whole range in one sample (fresh17's register: 6.55 mm of a record spanning 6.55 mm);
-# a strip's response at most by what it moves in a sample after an edge (away from the edges: at most 0.070 of the
-# record's span on the tuning set's 40 sessions, 0.053 on every other cached session but a drive on its own clock,
+# a strip's response at most by what it moves in a sample after an edge (away from the edges: at most 0.050 of the
+# record's span on the tuning set's 40 sessions, 0.058 on every other cached session but a drive on its own clock,
 # 0.33; docs/diagnosis.md "A reading carried round its range"). A physical bound, not a tuned one
 WRAP_SHARE = 0.5
 EDGE = 2  # samples either side of a drive change: the current's spike and a slow record's rise live there
+KEEPS = 3  # samples after a wrap that stay at the new level (a dropout to a sentinel comes back at once)
 
 
 def run_lengths(mask: np.ndarray) -> np.ndarray:
@@ -89,27 +92,42 @@ def record_clips(r: TimeRecord) -> dict[str, dict[str, Any]]:
 
 
 def largest_jump(x: np.ndarray, v: np.ndarray) -> tuple[float, int]:
-    """(the largest one-sample change of ``x`` away from the drive's edges over the record's span, its index); (0, -1)
-    for a record too short or flat."""
-    x = np.asarray(x, float)
-    if x.size < MIN_SAMPLES or not np.all(np.isfinite(x)) or np.ptp(x) == 0:
+    """(the largest one-sample change of ``x`` away from the drive's edges that the reading keeps for the next
+    samples, over the record's span; its index); (0, -1) for a record too short, flat or not finite. The drive's edges:
+    its one-sample changes of a tenth of its span or more (a step's switch, not a measured drive's noise). A change
+    the reading gives back at once (a dropout to a sentinel) is not a wrap."""
+    x, v = np.asarray(x, float), np.asarray(v, float)
+    if x.size < MIN_SAMPLES or not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))) or np.ptp(x) == 0:
         return 0.0, -1
-    dv = np.abs(np.diff(np.asarray(v, float)))
-    edge = np.flatnonzero(dv > 1e-3 * max(float(dv.max(initial=0.0)), 1e-12)) if dv.size and dv.max() > 0 else np.zeros(0, int)
+    span = float(np.ptp(x))
+    dv = np.abs(np.diff(v))
     near = np.zeros(x.size - 1, bool)
-    for e in edge:
+    for e in np.flatnonzero(dv >= 0.1 * max(float(np.ptp(v)), 1e-12)) if np.ptp(v) > 0 else []:
         near[max(e - EDGE, 0): e + EDGE + 1] = True
     jump = np.where(near, 0.0, np.abs(np.diff(x)))
+    n = x.size - 1
+    # kept: for KEEPS samples after it the reading stays at least half the jump away from where it left, and it had
+    # been there for KEEPS samples before (a dropout's return leaves a level held for a sample or two)
+    stay = np.full(n, np.inf)
+    for m in range(1, KEEPS + 1):
+        ahead, behind = np.full(n, 0.0), np.full(n, 0.0)
+        ahead[: n - m + 1] = np.abs(x[m:] - x[: x.size - m])  # x[k + m] against x[k]
+        behind[m - 1:] = np.abs(x[m:] - x[: x.size - m])[: n - m + 1]  # x[k + 1] against x[k + 1 - m]
+        stay = np.minimum(stay, np.minimum(ahead, behind))
+    jump = np.where(stay >= 0.5 * jump, jump, 0.0)
     k = int(np.argmax(jump))
-    return float(jump[k] / np.ptp(x)), k
+    return float(jump[k] / span), k
 
 
 def wrapping(sd: SessionData, min_records: int) -> dict[str, Any]:
-    """Per channel (current, displacement), the records that jump by ``WRAP_SHARE`` of their span in one sample away
-    from the drive's edges; flagged where one channel does in ``min_records`` records or more."""
+    """Per channel (current, displacement), the step records that jump by ``WRAP_SHARE`` of their span in one sample
+    away from the drive's edges and stay there; flagged where one channel does in ``min_records`` records or more.
+    Step records only: a sine's response moves fast at every sample of a coarsely sampled record."""
     per: dict[str, list[str]] = {}
     worst = 0.0
     for r in sd.all_records():
+        if r.kind != RecordKind.STEP:
+            continue
         for ch in ("current", "displacement"):
             share, k = largest_jump(getattr(r, CHANNELS[ch]), r.v)
             worst = max(worst, share)

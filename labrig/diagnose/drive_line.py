@@ -9,7 +9,7 @@ twice: on that case it halved the steps' misfit and raised the sines' current fr
 
 The data hold the element without the model: the DAQ's impedance at each stepped sine, 1/Y_daq, less the analyser's
 at the same frequency and pressure (a cubic spline of its real and imaginary parts in log f) is Z_s = R + 1/(j w C)
-(``series_reading``; linear least squares, each point weighted by the strip's |Z|, to which its error is relative).
+(``series_reading``; linear least squares, each point weighted by 1/|Z|^2: its error is relative to the strip's |Z|).
 On clean sessions that reads 1/C of 0.1-0.25 F^-1 (C of 4-10 F, no element); on the supercapacitor of 0.227 F, 0.216 F.
 The session is then recorded anew with the strip's own drive (``behind_series``), the seed-000 fit run on it, and the
 rival's series form (rivals.SERIES_ELEMENT) fitted on that baseline from the reading: it predicts the recorded
@@ -53,23 +53,26 @@ def series_reading(feats: Features, pressures: set) -> tuple[float, float] | Non
     return max(r, 0.0), max(el, 0.0)
 
 
-def _charge(rec) -> np.ndarray:
-    """The charge through the strip since the record's start (C): the current less its offset (a sine's mean over the
-    record, a multisine's over its periods; another record's level at rest before its drive), which the amplifier's
-    zero sets, not the strip."""
+def _offset(rec) -> float:
+    """The current's offset, which the amplifier's zero sets, not the strip: a periodic record's mean over the record;
+    another record's level at rest before its drive leaves its first value (0 if it never rests)."""
     i = np.asarray(rec.i, float)
     if rec.kind in PERIODIC:
-        i0 = float(np.mean(i))
-    else:
-        v = np.abs(np.asarray(rec.v, float))
-        moving = np.flatnonzero(v > 1e-3 * max(float(v.max()), 1e-12)) if v.size else np.zeros(0, int)
-        i0 = float(np.median(i[: moving[0]])) if moving.size and moving[0] > 0 else 0.0
-    return cumulative_trapezoid(i - i0, rec.t, initial=0.0)
+        return float(np.mean(i))
+    v = np.abs(np.asarray(rec.v, float) - float(rec.v[0]))
+    moving = np.flatnonzero(v > 1e-3 * max(float(v.max(initial=0.0)), 1e-12))
+    return float(np.median(i[: moving[0]])) if moving.size and moving[0] > 0 else 0.0
 
 
 def behind_series(sd: SessionData, r: float, el: float) -> SessionData:
-    """The session with each record's drive the strip's own, v - R i - q/C, the sines' estimates made again."""
-    return recorded_anew(sd, lambda rec: dataclasses.replace(rec, v=rec.v - r * rec.i - el * _charge(rec)))
+    """The session with each record's drive the strip's own, v - R i - q/C (i less its offset, q its charge since the
+    record's start), the sines' estimates made again."""
+
+    def record(rec):
+        i = np.asarray(rec.i, float) - _offset(rec)
+        return dataclasses.replace(rec, v=rec.v - r * i - el * cumulative_trapezoid(i, rec.t, initial=0.0))
+
+    return recorded_anew(sd, record)
 
 
 def series_contexts(ws: WetSession, feats: Features, r: float, el: float, build):

@@ -96,9 +96,6 @@ SERIES_ELEMENT = Extension("drive_path", ("series_ohm", "elastance_per_F"), (5.0
                            "the strip behind a series element in the drive line, R + 1/(C s), the DAQ recording the drive "
                            "before it: a sense resistor, a DC-blocking capacitor (outside the catalogue)", form="series_element")
 
-# the rival's forms: each fitted where the named cause leaves what that form would explain (engine._rival)
-DRIVE_PATHS = (DRIVE_PATH, SERIES_ELEMENT)
-
 
 def _what(r: dict) -> str:
     """What the strip saw, by the rival's form and parameters."""
