@@ -25,6 +25,16 @@ def exported(bench_sessions, tmp_path_factory):
     return folder
 
 
+def imported_and_diagnosed(s, folder, capsys) -> dict:
+    """The injected session written as CSVs, imported and diagnosed from the command line: its JSON."""
+    h5 = folder.with_suffix(".h5")
+    assert main(["import", str(inject.write_import(s, folder)), "--out", str(h5)]) == 0
+    capsys.readouterr()
+    assert main(["diagnose", str(h5), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    return out[0] if isinstance(out, list) else out
+
+
 def test_a_structure_outside_the_catalogue_is_unexplained_and_located(exported):
     """A fixture resonance in the displacement path: no catalogued extension removes it, the verdict says so and
     points at the displacement FRF in a band around the resonance (3-8 Hz drawn)."""
@@ -117,12 +127,7 @@ def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_pat
     s = inject.read_export(exported / "clean", "paper")
     inject.v_two_pressures(s)  # two of the four pressures: the verdict needs no more, and the fits take half the time
     clip_monitor(s)
-    h5 = tmp_path / "clipped.h5"
-    assert main(["import", str(inject.write_import(s, tmp_path / "clipped")), "--out", str(h5)]) == 0
-    capsys.readouterr()
-    assert main(["diagnose", str(h5), "--json"]) == 0
-    out = json.loads(capsys.readouterr().out)
-    out = out[0] if isinstance(out, list) else out
+    out = imported_and_diagnosed(s, tmp_path / "clipped", capsys)
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
     clipped = out["recording"]["clipped"]
     assert clipped["flagged"] and clipped["channels"] == ["drive"]
@@ -140,12 +145,7 @@ def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(
     for r in s.series():
         codes = np.round(r.cols["disp_m"] / 1e-7).astype(np.int64)
         r.cols["disp_m"] = (((codes + 32768) % 65536) - 32768) * 1e-7
-    h5 = tmp_path / "wrapped.h5"
-    assert main(["import", str(inject.write_import(s, tmp_path / "wrapped")), "--out", str(h5)]) == 0
-    capsys.readouterr()
-    assert main(["diagnose", str(h5), "--json"]) == 0
-    out = json.loads(capsys.readouterr().out)
-    out = out[0] if isinstance(out, list) else out
+    out = imported_and_diagnosed(s, tmp_path / "wrapped", capsys)
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
     wrapped = out["recording"]["wrapped"]
     assert wrapped["flagged"] and wrapped["channels"] == ["displacement"] and len(wrapped["records"]["displacement"]) == 2
@@ -170,12 +170,7 @@ def test_a_capacitor_in_the_drive_line_takes_the_verdict_from_a_relaxation(expor
         for col in ("i_A", "disp_m"):
             x = r.cols[col]
             r.cols[col] = x[0] + timeresp.simulate(divider, x - x[0], r.fs)
-    h5 = tmp_path / "capacitor.h5"
-    assert main(["import", str(inject.write_import(s, tmp_path / "capacitor")), "--out", str(h5)]) == 0
-    capsys.readouterr()
-    assert main(["diagnose", str(h5), "--json"]) == 0
-    out = json.loads(capsys.readouterr().out)
-    out = out[0] if isinstance(out, list) else out
+    out = imported_and_diagnosed(s, tmp_path / "capacitor", capsys)
     assert (out["verdict"], out["cause"]) == ("unexplained", None), (out["drive_path"], out["candidates"][:2], out["baseline"]["missed"])
     rival = out["drive_path"]
     assert rival["form"] == "series_element" and rival["heldout_ratio"] < rival["its_ratio"]
