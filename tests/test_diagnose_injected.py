@@ -14,6 +14,7 @@ import pytest
 from bench import diagnose_probes as probes
 from bench import inject
 from labrig.cli import main
+from test_diagnose_clipping import _wrapped
 
 BENCH_CASES = [("none", 1)]  # shared with test_fit and the coverage (conftest)
 
@@ -143,8 +144,7 @@ def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(
     s = inject.read_export(exported / "clean", "paper")
     inject.v_two_pressures(s)
     for r in s.series():
-        codes = np.round(r.cols["disp_m"] / 1e-7).astype(np.int64)
-        r.cols["disp_m"] = (((codes + 32768) % 65536) - 32768) * 1e-7
+        r.cols["disp_m"] = _wrapped(r.cols["disp_m"], 1e-7)
     out = imported_and_diagnosed(s, tmp_path / "wrapped", capsys)
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
     wrapped = out["recording"]["wrapped"]

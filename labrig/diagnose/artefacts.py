@@ -388,19 +388,24 @@ def level(a: dict[str, Any]) -> float:
                      m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE))
 
 
+def _records(names: list[str], kind: str = "") -> str:
+    """'n [kind]records (the first four, ...)'."""
+    return f"{len(names)} {kind}records ({', '.join(names[:4])}{', ...' if len(names) > 4 else ''})"
+
+
 def detail(a: dict[str, Any]) -> str:
     """One line for the report and the JSON's ``residual.where``: what the recording shows and where."""
     parts = []
     if a.get("clipped", {}).get("flagged"):
         c = a["clipped"]
         parts.append("; ".join(f"the {ch} reading held at {', '.join(f'{x:g} {UNITS[ch]}' for x in c['levels'][ch][:4])} (the end of its range) in "
-                               f"{len(c['records'][ch])} records ({', '.join(c['records'][ch][:4])}{', ...' if len(c['records'][ch]) > 4 else ''})"
+                               f"{_records(c['records'][ch])}"
                                for ch in c["channels"])
                      + f", up to {c['longest_run']} readings in a row: a clipped channel, whose features are not the signal")
     if a.get("wrapped", {}).get("flagged"):
         w = a["wrapped"]
         parts.append("; ".join(f"the {ch} reading jumps by half its record's span or more in one sample and stays there, away from the drive's edges, in "
-                               f"{len(w['records'][ch])} records ({', '.join(w['records'][ch][:4])}{', ...' if len(w['records'][ch]) > 4 else ''})"
+                               f"{_records(w['records'][ch])}"
                                for ch in w["channels"]) + ": a reading carried round its converter's or register's range, whose features are not the signal")
     if a["bursts"]["flagged"]:
         b = a["bursts"]
@@ -421,8 +426,8 @@ def detail(a: dict[str, Any]) -> str:
                      f"noise growing with the target's speed or range, a contact chattering while the strip moves")
     if a.get("arming", {}).get("flagged"):
         g = a["arming"]
-        parts.append(f"the {' and '.join(g['channels'])} is not at rest for the first {g['window_s']:g} s of {len(g['records'])} step "
-                     f"records ({', '.join(g['records'][:4])}{', ...' if len(g['records']) > 4 else ''}), its scatter up to "
+        parts.append(f"the {' and '.join(g['channels'])} is not at rest for the first {g['window_s']:g} s of {_records(g['records'], 'step ')}, "
+                     f"its scatter up to "
                      f"z = {a['max']['arming_z']:.0f} over the rest's before the edge: something switched as each record is armed "
                      f"(a relay ringing the sensor's stand, an amplifier settling)")
     for key, what in (("spells", "the {ch} noise rises {v:.0f}-fold for a while and falls back (a spell: a draught or a jet "

@@ -25,9 +25,8 @@ from scipy.integrate import cumulative_trapezoid
 from scipy.interpolate import CubicSpline
 
 from labrig.diagnose.features import Features
-from labrig.diagnose.wet_strip import WetSession, paired_sines, recorded_anew
-from labrig.estimate.session_data import SessionData
-from labrig.fit.seed000 import fit_seed000
+from labrig.diagnose.wet_strip import WetSession, paired_sines, recorded_anew, refitted_contexts
+from labrig.estimate.session_data import SessionData, step_onset
 from labrig.records import SINE_KINDS, RecordKind
 
 PERIODIC = (*SINE_KINDS, RecordKind.MULTISINE)  # records driven from their first sample, periodic: the mean is the offset
@@ -55,13 +54,12 @@ def series_reading(feats: Features, pressures: set) -> tuple[float, float] | Non
 
 def _offset(rec) -> float:
     """The current's offset, which the amplifier's zero sets, not the strip: a periodic record's mean over the record;
-    another record's level at rest before its drive leaves its first value (0 if it never rests)."""
+    another record's level at rest before its drive switches on (``step_onset``; 0 if it never rests)."""
     i = np.asarray(rec.i, float)
     if rec.kind in PERIODIC:
         return float(np.mean(i))
-    v = np.abs(np.asarray(rec.v, float) - float(rec.v[0]))
-    moving = np.flatnonzero(v > 1e-3 * max(float(v.max(initial=0.0)), 1e-12))
-    return float(np.median(i[: moving[0]])) if moving.size and moving[0] > 0 else 0.0
+    rest = rec.t < step_onset(rec)
+    return float(np.median(i[rest])) if rest.any() else 0.0
 
 
 def behind_series(sd: SessionData, r: float, el: float) -> SessionData:
@@ -78,9 +76,4 @@ def behind_series(sd: SessionData, r: float, el: float) -> SessionData:
 def series_contexts(ws: WetSession, feats: Features, r: float, el: float, build):
     """The fitted and held-out contexts (``build``: ``engine.build_context``) of the recorded features on the seed-000
     fit of the session behind the element (``behind_series``). None if that fit gives no strip."""
-    fit = fit_seed000(behind_series(ws.sd, r, el))
-    specimens = fit.staged_specimens or fit.specimens
-    if not specimens:
-        return None
-    cf = build(feats, specimens, ws.fit_set)
-    return cf, cf if ws.fit_set == ws.held_set else build(feats, specimens, ws.held_set)
+    return refitted_contexts(ws, behind_series(ws.sd, r, el), feats, build)

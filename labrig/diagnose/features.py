@@ -276,12 +276,12 @@ def predict_step(sp: Specimen, st: StepFeature, drive: np.ndarray | None = None)
     """The baseline's step response from rest to the recorded drive: simulated at the record's own rate, then
     block-averaged exactly as the measurement was (a decimated drive would smear the current's spike)."""
     v = st.v_full if drive is None else drive
-    d, i = timeresp.respond(v, st.fs_full, _step_grid(sp, v.size, st.fs_full))
+    d, i = timeresp.respond(v, st.fs_full, step_grid(sp, v.size, st.fs_full))
     return st.decimate(d), st.decimate(i)
 
 
 @functools.lru_cache(maxsize=24)
-def _step_grid(sp: Specimen, n: int, fs: float):
+def step_grid(sp: Specimen, n: int, fs: float):
     """The strip's displacement and admittance on the step's FFT grid: the same for every drive a form tries on
     that record (the play and PI forms re-drive the step at each evaluation)."""
     return timeresp.transfer_grid([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], n, fs)

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, cosine_harmonics, specimen_for
-from labrig.diagnose.features import _step_grid, predict_step
+from labrig.diagnose.features import step_grid, predict_step
 from labrig.physics import timeresp, transfer
 
 _N = 64  # samples per cycle of the map's describing function
@@ -84,9 +84,8 @@ def series_element(th, ctx: Context):
     for k, st in enumerate(ctx.steps):
         if st.fs_full <= 0 or st.v_full.size == 0:
             continue
-        nfft, sigma, (h, y) = _step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
-        s = sigma + 2j * np.pi * np.fft.rfftfreq(nfft, 1.0 / st.fs_full)
-        g = 1.0 / (1.0 + (r + el / s) * y)
+        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
+        g = 1.0 / (1.0 + (r + el / timeresp.grid_s(nfft, sigma, st.fs_full)) * y)
         d, i = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [h * g, y * g]))
         p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
     return p

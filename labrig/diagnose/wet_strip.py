@@ -160,13 +160,23 @@ def wet_contexts(ws: WetSession, feats: Features, ext: Extension, corr: dict[str
     corrected by ``corr`` (``correction``), their spectra dried again. None if that fit gives no strip."""
     x = loss_of(ext, np.r_[np.zeros(4), [corr[f"wet_{p}"] for p in ext.params[4:]]], feats)
     k_i = corr["wet_conductance_loss"]
-    fit = fit_seed000(wet_session(ws.sd, x, corr["wet_gain_loss"], k_i))
+    both = refitted_contexts(ws, wet_session(ws.sd, x, corr["wet_gain_loss"], k_i), feats, build)
+    if both is None:
+        return None
+    cf = redried(both[0], x, k_i)
+    return cf, cf if both[1] is both[0] else redried(both[1], x, k_i)
+
+
+def refitted_contexts(ws: WetSession, corrected: SessionData, feats: Features, build) -> tuple[Context, Context] | None:
+    """The fitted and held-out contexts (``build``: ``engine.build_context``) of the recorded features ``feats`` on the
+    seed-000 fit of the ``corrected`` session (the same context twice where the halves are the same records). None if
+    that fit gives no strip."""
+    fit = fit_seed000(corrected)
     specimens = fit.staged_specimens or fit.specimens
     if not specimens:
         return None
-    cf = redried(build(feats, specimens, ws.fit_set), x, k_i)
-    ch = cf if ws.fit_set == ws.held_set else redried(build(feats, specimens, ws.held_set), x, k_i)
-    return cf, ch
+    cf = build(feats, specimens, ws.fit_set)
+    return cf, cf if ws.fit_set == ws.held_set else build(feats, specimens, ws.held_set)
 
 
 def refine_loss(k0: float, on_wet: Callable[[float], Any]) -> Any:

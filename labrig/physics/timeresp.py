@@ -55,8 +55,12 @@ def transfer_grid(tfs: Sequence[TransferFunction], n: int, fs: float, pad: float
     T_fft); the numerical error at time t comes back lifted by damping^(t / T_fft) (docs/model.md 6)."""
     nfft = sfft.next_fast_len(int(n * (1.0 + pad)) + 16, real=True)
     sigma = np.log(damping) / (nfft / fs)
-    s_bins = sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
-    return nfft, sigma, _grid_values(tfs, s_bins)
+    return nfft, sigma, _grid_values(tfs, grid_s(nfft, sigma, fs))
+
+
+def grid_s(nfft: int, sigma: float, fs: float) -> np.ndarray:
+    """The Laplace variable at the bins of a ``transfer_grid``: sigma + j omega_k."""
+    return sigma + 2j * np.pi * sfft.rfftfreq(nfft, 1.0 / fs)
 
 
 def respond(u: np.ndarray, fs: float, grid: tuple[int, float, list[np.ndarray]]) -> list[np.ndarray]:
