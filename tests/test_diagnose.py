@@ -162,6 +162,33 @@ def test_the_fourth_pass_forms_follow_their_physics():
     assert families._adsorption(np.array([0.4]), th, np.zeros(1))[0] == 0.0
 
 
+def test_a_drying_from_an_onset_and_one_set_anew_at_each_clamp_setting():
+    """The onset form is nothing before its moment and 1 at the session's end; the time since a setting restarts at
+    each pressure's first record (steps and sines alike, in the order they ran); the per-setting form dips at each
+    setting and recovers through the block (w > 0) or builds through each block (w < 0), on the clock's trend."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose import slow_forms
+    from labrig.diagnose.features import Features
+
+    u = np.linspace(0, 1, 101)
+    x = slow_forms.from_onset(u, (0.4, 0.2))
+    assert np.all(x[u < 0.4] == 0) and abs(x[-1] - 1) < 1e-12 and np.all(np.diff(x[u >= 0.4]) > 0)
+
+    rec = lambda p, t: SimpleNamespace(pressure_kPa=p, t_start=t)  # noqa: E731
+    feats = Features(t0=0.0, t1=400.0, sines=[rec(500.0, 20.0), rec(900.0, 130.0), rec(900.0, 190.0)],
+                     steps=[rec(500.0, 0.0), rec(900.0, 100.0), rec(1300.0, 300.0)])
+    np.testing.assert_allclose(feats.since_setting(np.array([0.0, 50.0, 100.0, 250.0, 310.0, -5.0])), [0, 50, 0, 150, 10, 0])
+    ctx = SimpleNamespace(feats=feats)
+    t = np.array([100.0, 190.0, 299.0])
+    dip = slow_forms.per_setting(t, (1.0, 30.0), ctx)
+    np.testing.assert_allclose(dip, np.exp(-np.array([0.0, 90.0, 199.0]) / 30.0))
+    build = slow_forms.per_setting(t, (-0.5, 1e6), ctx)  # no recovery within the block: the trend 1.5 u less 0.5
+    np.testing.assert_allclose(build, 1.5 * t / 400.0 - 0.5, atol=1e-3)
+
+
 def test_a_displacement_on_a_clock_of_its_own_is_told_from_one_on_the_drives():
     """The per-cycle phase of the displacement drifts by 2 pi eps a cycle when its samples carry times of a clock
     (1 + eps) off the drive's (a sensor logging on its own oscillator); on the drive's clock it does not drift, even

@@ -55,6 +55,7 @@ DBIC_EFFECT = -25.0  # evidence needed to name an effect
 # extensions: ratios 0.004-0.39); one that removes less leaves structure it does not explain, and an extension that
 # only soaks up part of an uncatalogued misfit (the probe: 0.85-0.90) must not be named for it
 RATIO_EFFECT = 0.5
+WET_FORMS = 3  # drying forms judged again on the wet strip, the best on the baseline first (each a seed-000 refit)
 # a further effect, judged on top of those accepted, must predict the held-out half 20 % better: the residual left by
 # an adopted extension includes its own approximation error, which a flexible second one partly soaks up (single-effect
 # sessions gained 6-11 % from a spurious second back_relaxation or dehydration; real second effects gain far more)
@@ -349,6 +350,10 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.02, 1.0, 0.0, 1.0]), np.array([0.1, 0.0, -0.2, 1.0])]  # a narrow deep dead zone; clipping
     if ext.form == "series_element":
         starts += [np.array([0.0, 30.0]), np.array([30.0, 0.0])]  # a capacitor alone; a resistor alone
+    if ext.form == "onset":
+        starts += [np.array([1.0, 0.2, 1.0, 0.1, 0.15, 0.3]), np.array([1.0, 0.2, 1.0, 0.1, 0.7, 0.3])]  # early, late
+    if ext.form == "per_setting":
+        starts += [np.array([1.0, 0.2, 1.0, 0.1, -0.5, 200.0])]  # a loss building through each block
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)
@@ -422,10 +427,13 @@ class _Scorer:
             law = self.score_form(name, scaled(best.ext, [best.params[p] for p in best.ext.params]))
             best = min(best, dataclasses.replace(law, params={**best.params, **law.params}), key=_choice)
         if name == "dehydration" and self.wet_session is not None:
-            if on_base.delta_bic < DBIC_EFFECT and RATIO_EFFECT < on_base.heldout_ratio < 1.0:
-                # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py)
-                wet = self.wet(on_base)
-                best = best if wet is None else min(best, wet, key=_choice)
+            # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py), in the
+            # forms that predict best on the baseline; the baseline's absorbed drying reorders them (a form second on
+            # it can be first on the wet strip), so more than the first is tried
+            for c in sorted(forms, key=_choice)[:WET_FORMS]:
+                if c.delta_bic < DBIC_EFFECT and RATIO_EFFECT < c.heldout_ratio < 1.0:
+                    wet = self.wet(c)
+                    best = best if wet is None else min(best, wet, key=_choice)
         return best
 
     def wet(self, c: Candidate) -> Candidate | None:

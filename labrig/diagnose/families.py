@@ -13,7 +13,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
-| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge |
+| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge; from an onset inside the session; set anew at each clamp setting |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
@@ -367,6 +367,12 @@ FAMILIES["dehydration"] += [
           "a constant drying rate up to the critical moisture, then a falling rate towards the removable water (the drying curve)"),
     _form("dehydration", "charge", (*_DRY, "charge_share"), (1.0, 0.2, 1.0, 0.1, 0.7), (0.5, -0.5, 0.5, -0.5, 0.0), (2.0, 0.9, 2.0, 0.9, 1.0),
           slow.drying(slow.by_charge), "gain and conductance falling with the charge passed (electro-osmotic drag), beside the clock's evaporation"),
+    _form("dehydration", "onset", (*_DRY, "onset_u", "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.4, 0.3), (0.5, -0.5, 0.5, -0.5, 0.0, 0.01),
+          (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), slow.session_time(slow.from_onset),
+          "gain and conductance steady until a moment inside the session, then falling first order (the room's air changed)"),
+    _form("dehydration", "per_setting", (*_DRY, "setting_share", "setting_tau_s"), (1.0, 0.2, 1.0, 0.1, 0.5, 200.0),
+          (0.5, -0.5, 0.5, -0.5, -1.5, 5.0), (2.0, 0.9, 2.0, 0.9, 1.0, 3000.0), slow.drying(slow.per_setting),
+          "water set anew at each clamp setting and followed through the block with a sorption lag, beside the clock's trend"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
 FAMILIES["clamp_relaxation"] += [

@@ -149,6 +149,22 @@ class Features:
         knots, share = self._charge_knots
         return np.interp(t, knots, share)
 
+    def since_setting(self, t: np.ndarray | float) -> np.ndarray:
+        """Rig seconds since the clamp's setting in force at t was made: since the first record at the pressure whose
+        block t falls in (a sweep sets each pressure once, in blocks); since the session's start with one setting."""
+        starts = self._setting_starts
+        t = np.asarray(t, float)
+        k = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, starts.size - 1)
+        return np.maximum(t - starts[k], 0.0)
+
+    @functools.cached_property
+    def _setting_starts(self) -> np.ndarray:
+        first: dict[float | None, float] = {}
+        for r in (*self.sines, *self.steps):
+            first[r.pressure_kPa] = min(first.get(r.pressure_kPa, np.inf), r.t_start)
+        starts = np.sort([t for t in first.values() if np.isfinite(t)])
+        return starts if starts.size else np.array([self.t0])
+
     @functools.cached_property
     def _charge_knots(self) -> tuple[np.ndarray, np.ndarray]:
         """The charge share is piecewise linear between the records' starts and ends: its values there, once (the

@@ -78,6 +78,24 @@ def falling_rate(u, sh):
     return f(u) / f(np.array(1.0))
 
 
+def from_onset(u, sh):
+    """Drying that starts at a moment inside the session, u0 (a humidifier's tank runs dry, a purge stops, a door is
+    left open): nothing before it, then first order towards the new equilibrium with tau (in session spans)."""
+    u0, tau = sh
+    x = np.maximum(np.asarray(u, float) - u0, 0.0)
+    return -np.expm1(-x / tau) / -np.expm1(-max(1.0 - u0, 1e-6) / tau)
+
+
+def per_setting(t, sh, ctx: Context):
+    """Water set anew at each clamp setting (the operator opens a shield or a lid to re-clamp, squeezes the pads that
+    feed the strip, lets the bath's air in) and followed through the block with the sorption lag tau (s), beside the
+    clock's trend: x = (1 - w) u + w exp(-t_b/tau), t_b the time since the block's first record. w > 0: a loss at
+    each setting made up through the block; w < 0: a loss that builds through each block and is made up (or steps
+    down) at the next setting."""
+    w, tau = sh
+    return (1 - w) * ctx.feats.time_share(t) + w * np.exp(-ctx.feats.since_setting(t) / tau)
+
+
 # ------------------------------------------------------------------------------------------ clamp creep
 
 
