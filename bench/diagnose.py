@@ -60,8 +60,11 @@
 * Fresh17 held-out set (``--set fresh17``, bench/inject_fresh17.py ``fresh17_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 121-123, the paper
   strip 26 mm free, a new data shape (a process historian's swinging-door compression of every record).
+* Fresh18 held-out set (``--set fresh18``, bench/inject_fresh18.py ``fresh18_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 124-126, the paper
+  strip 23 mm free, a new data shape (each stepped sine stored as its averaged period).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -153,7 +156,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh14": "fresh14 held-out set (diagnosed once unseen at 31d37e2; seen since)",
           "fresh15": "fresh15 held-out set (diagnosed once unseen at 6439289; seen since)",
           "fresh16": "fresh16 held-out set (diagnosed once unseen at 6a827f8; seen since)",
-          "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)"}
+          "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)",
+          "fresh18": "fresh18 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
