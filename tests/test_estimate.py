@@ -302,3 +302,29 @@ def test_imported_multisine_with_a_doubled_period_and_repeated_steps(tmp_path):
     assert np.allclose(p.bla.G_disp, transfer.frf(ms.excited_Hz, TRUTH), rtol=1e-3)
     d = p.drift["step/repeats"]
     assert d.significant() and d.relative_change.real < -0.04
+
+
+def test_an_averaged_period_reads_as_the_record_it_was_averaged_from():
+    """A logger's averaged period (the measured cycles cut at the drive's period and averaged sample by sample) holds
+    the record's periodic part and its drift as a ramp: demodulated with a line, not a quadratic (over one cycle a
+    quadratic is all but the fundamental's cosine), it gives the whole record's response, and its noise, from the fit's residual, is the record's within
+    a factor of 1.5. Records of 1.5 cycles or more keep their quadratic trend."""
+    from labrig.estimate import sine_estimate, trend_degree
+
+    rng = np.random.default_rng(3)
+    fs, f, cycles = 1000.0, 20.0, 40
+    t = np.arange(int(cycles * fs / f)) / fs
+    v = 0.5 * np.sin(2 * np.pi * f * t)
+    d = (1.4e-6 * np.sin(2 * np.pi * f * t - 2.5) + 1.2e-8 * np.sin(4 * np.pi * f * t) + 2e-7 * (t / t[-1]) ** 2
+         + 4e-7 * rng.standard_normal(t.size))
+    i = 0.011 * np.sin(2 * np.pi * f * t + 0.3) + 2e-5 * rng.standard_normal(t.size)
+    whole = sine_estimate(t, v, i, d, f)
+    n = int(fs / f)
+    avg = [x.reshape(cycles, n).mean(axis=0) for x in (v, i, d)]
+    one = sine_estimate(t[:n], *avg, f)
+    assert trend_degree(t[:n], f, 5) == 1 and trend_degree(t[: int(1.5 * n)], f, 5) == 2 and trend_degree(t, f, 5) == 2
+    for a, b, sigma in ((one.H_disp, whole.H_disp, whole.disp_noise), (one.H_cur, whole.H_cur, whole.cur_noise)):
+        assert abs(a - b) < 3 * sigma
+    for a, b in ((one.disp_noise, whole.disp_noise), (one.cur_noise, whole.cur_noise)):
+        assert b / 1.5 < a < 1.5 * b
+    assert one.noise_dof > 20 and np.isfinite(one.disp_noise)

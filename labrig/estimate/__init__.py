@@ -88,10 +88,29 @@ def _demod_span(t: np.ndarray, f: float, skip_cycles: float, cycles: float | Non
     return sl
 
 
+TREND_INFLATION = 4.0  # a trend term may cost the fundamental at most this factor of its variance (2x its std)
+
+
+def trend_degree(t: np.ndarray, f: float, harmonics: int, most: int = 2) -> int:
+    """The degree of ``demodulate``'s polynomial trend for a record: the highest up to ``most`` that costs the
+    fundamental at most ``TREND_INFLATION`` x its variance without a trend. Over 1.2 cycles or more every degree
+    passes (x3.7 at most, 5 harmonics; x1.38 at 1.5 cycles), so labrig's records keep their quadratic. Over one cycle
+    (a logger's averaged period) the quadratic is all but collinear with the fundamental's cosine (x290): fitted there
+    it traded with the harmonics above those modelled and read a clean strip's 20 Hz response 11 % low and 0.6 rad
+    off; the line (x3.9) stays, because the averaging turns the record's drift into a ramp across the period
+    (docs/diagnosis.md, "An averaged period")."""
+    t = np.asarray(t, float)
+    if t.size < 2 or np.ptp(t) * f >= 3.0:
+        return most
+    v0 = _fundamental_variance(t, f, harmonics, 0)
+    return next((p for p in range(most, 0, -1) if _fundamental_variance(t, f, harmonics, p) <= TREND_INFLATION * v0), 0)
+
+
 def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: float | None = None, harmonics: int = 5) -> SineEstimate:
     """Demodulate a stepped-sine or harmonic record after its settling cycles."""
     sl = _demod_span(np.asarray(t), f, settle_cycles, cycles)
     tt, vv, ii, dd = (np.asarray(a)[sl] for a in (t, v, i, d))
+    trend = trend_degree(tt, f, harmonics)
     per_cycle_d, per_cycle_i, per_cycle_var, per_cycle_amp = [], [], [], []
     fs = 1.0 / np.median(np.diff(tt))
     n1 = int(round(fs / f))
@@ -108,17 +127,29 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     cn = float(np.std(per_cycle_i) / np.sqrt(nc)) if nc > 1 else float("nan")
     inflation = 1.0
     if nc > 1:  # white noise: E[std^2] (ddof 0) = (nc - 1)/nc of a one-cycle fit's variance; over nc, against the whole fit's
-        inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics)))
-    x = _design(tt, f, harmonics, 2)
+        inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics, trend)))
+    x = _design(tt, f, harmonics, trend)
     coef = np.linalg.lstsq(x, np.asarray(dd, float), rcond=None)[0]
     noise_var = _noise_variance(dd, np.hstack([x, _mains_columns(tt, f, harmonics)]))
+    dof = 2 * (nc - 1) if nc > 1 else 0
+    if nc == 1 and tt.size > x.shape[1] + 2:
+        # one cycle (a logger's averaged period): no scatter between cycles, so the noise is the fit's own residual,
+        # carried in the scatter's units (what one cycle's fit with its trend reads: noise_inflation over the record's
+        # estimate), with the residual's degrees of freedom; what the residual holds beside noise (harmonics above those
+        # modelled) counts as noise, the cautious side
+        wide = np.hstack([x, _mains_columns(tt, f, harmonics)])
+        fv = _fundamental_variance(tt, f, harmonics, trend)
+        inflation = float(np.sqrt(_fundamental_variance(tt, f, 1) / fv))
+        a_v = abs(demodulate(tt, vv, f, harmonics, trend)[0]) or 1.0
+        dn, cn = (float(np.sqrt(var * fv) * inflation / a_v) for var in (noise_var, _noise_variance(ii, wide)))
+        dof = max(tt.size - wide.shape[1], 0)
     # the phase of one cycle's fundamental scatters by (its tangential noise) / (its amplitude), at least
     with np.errstate(divide="ignore", invalid="ignore"):
         phase_var = noise_var * np.array(per_cycle_var) / 2 / np.array(per_cycle_amp) ** 2
     drift, drift_sigma = _phase_trend(np.array(per_cycle_d), phase_var)
-    disp = coef[3:].reshape(-1, 2)
-    return SineEstimate(f, demodulate(tt, vv, f, harmonics), demodulate(tt, ii, f, harmonics), disp[:, 0] - 1j * disp[:, 1], dn, cn,
-                        inflation, 2 * (nc - 1) if nc > 1 else 0, float(np.mean(dd)) if dd.size else 0.0, drift, drift_sigma)
+    disp = coef[trend + 1 :].reshape(-1, 2)
+    return SineEstimate(f, demodulate(tt, vv, f, harmonics, trend), demodulate(tt, ii, f, harmonics, trend), disp[:, 0] - 1j * disp[:, 1], dn, cn,
+                        inflation, dof, float(np.mean(dd)) if dd.size else 0.0, drift, drift_sigma)
 
 
 MAINS_HZ = (50.0, 60.0)
@@ -719,6 +750,7 @@ def step_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, t_on: float, t_off
 def harmonic_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, f: float, skip_cycles: float = 1.0) -> tuple[float, float]:
     """(displacement amplitude in m, phase lag of displacement behind the drive in degrees) after ``skip_cycles``."""
     sl = _demod_span(np.asarray(t), f, skip_cycles, None)
-    a_v = demodulate(np.asarray(t)[sl], np.asarray(v)[sl], f)[0]
-    a_d = demodulate(np.asarray(t)[sl], np.asarray(d)[sl], f)[0]
+    trend = trend_degree(np.asarray(t)[sl], f, 1)
+    a_v = demodulate(np.asarray(t)[sl], np.asarray(v)[sl], f, 1, trend)[0]
+    a_d = demodulate(np.asarray(t)[sl], np.asarray(d)[sl], f, 1, trend)[0]
     return float(abs(a_d)), float(-np.degrees(np.angle(a_d / a_v)))
