@@ -371,7 +371,7 @@ FAMILIES["dehydration"] += [
           (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), slow.session_time(slow.from_onset),
           "gain and conductance steady until a moment inside the session, then falling first order (the room's air changed)"),
     _form("dehydration", "per_setting", (*_DRY, "setting_share", "setting_tau_s"), (1.0, 0.2, 1.0, 0.1, 0.5, 200.0),
-          (0.5, -0.5, 0.5, -0.5, -1.5, 5.0), (2.0, 0.9, 2.0, 0.9, 1.0, 3000.0), slow.drying(slow.per_setting),
+          (0.5, -0.5, 0.5, -0.5, -1.0, 5.0), (2.0, 0.9, 2.0, 0.9, 1.0, 3000.0), slow.drying(slow.per_setting),
           "water set anew at each clamp setting and followed through the block with a sorption lag, beside the clock's trend"),
 ]
 _CREEP = ("force_loss", "creep_tau_s", "kt_exponent", "gain_exponent")
