@@ -127,28 +127,6 @@ def _stations(s: Session, xs: np.ndarray, memory_s: float = 2.0) -> dict[int, np
     return out
 
 
-def _superpose_cols(s: Session, e: dict[int, np.ndarray], scale: dict[str, float]) -> None:
-    """inject_fresh7._superpose with a scale per column: the voltage e (id(record) -> array) reaches the current times
-    scale["i_A"] and the displacement times scale["disp_m"] through the strip's measured unit-step responses at that
-    pressure (the part of e already there at a record's start settled into its rest)."""
-    steps = {}
-    for r in reversed(_chrono(s)):
-        if r.kind == "step":
-            si, sd, _, _ = _step_responses(r)
-            steps[float(r.entry["pressure_kPa"])] = (np.arange(si.size) / r.fs, si, sd)
-    for r in s.series():
-        x, p = e[id(r)], float(r.entry["pressure_kPa"])
-        if p not in steps or not np.any(x != x[0]):
-            continue
-        n = x.size
-        m = 1 << int(math.ceil(math.log2(2 * n)))
-        de = np.fft.rfft(np.diff(x - x[0], prepend=0.0), m)
-        ts = steps[p][0]
-        for col, S in (("i_A", steps[p][1]), ("disp_m", steps[p][2])):
-            kern = np.interp(np.arange(n) / r.fs, ts, S)
-            r.cols[col] = r.cols[col] + scale[col] * np.fft.irfft(de * np.fft.rfft(kern, m), m)[:n]
-
-
 def _plateau_current(s: Session) -> dict[float, float]:
     """Each pressure's leak current at 1 V: the median abs(current) over the last 3 s of its first step's plateau,
     per volt of that step."""
@@ -639,7 +617,7 @@ def sr_through_crack(s: Session) -> None:
                 u = vk + (u - vk) * math.exp(-dt / tau) if tau > 0 else vk
             out[k] = u - vk
         e[id(r)] = out
-    _superpose_cols(s, e, {"disp_m": (1 - xc) ** 2, "i_A": 1 - xc})
+    _superpose(s, e, {"disp_m": (1 - xc) ** 2, "i_A": 1 - xc})
 
 
 # ------------------------------------------------------------------------------------------------ large deflection

@@ -54,12 +54,12 @@ KGF = 0.0980665  # the load-cell indicator's 0.01 kgf
 # ------------------------------------------------------------------------------------------------ tools
 
 
-def _superpose(s: Session, e: dict[int, np.ndarray]) -> None:
+def _superpose(s: Session, e: dict[int, np.ndarray], scale: dict[str, float] | None = None) -> None:
     """A voltage e (id(record) -> array) added to the drive the strip felt, the recorded v_V untouched: its change
     within each record reaches the current and the displacement through the strip's measured unit-step responses at
     that pressure (inject_fresh3._step_responses of the pressure's first step record, on the record's own clock, held
     at their last values beyond; superposition of e's steps). The part of e already there at a record's start is
-    taken as settled into the rest it starts from."""
+    taken as settled into the rest it starts from. ``scale``: a factor per column ("i_A", "disp_m"), 1 if not given."""
     steps = {}
     for r in reversed(_chrono(s)):
         if r.kind == "step":
@@ -75,7 +75,7 @@ def _superpose(s: Session, e: dict[int, np.ndarray]) -> None:
         ts = steps[p][0]
         for col, S in (("i_A", steps[p][1]), ("disp_m", steps[p][2])):
             kern = np.interp(np.arange(n) / r.fs, ts, S)
-            r.cols[col] = r.cols[col] + np.fft.irfft(de * np.fft.rfft(kern, m), m)[:n]
+            r.cols[col] = r.cols[col] + (scale or {}).get(col, 1.0) * np.fft.irfft(de * np.fft.rfft(kern, m), m)[:n]
 
 
 def _lag(v: np.ndarray, fs: float, tau: float) -> np.ndarray:
