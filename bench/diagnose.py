@@ -157,7 +157,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh15": "fresh15 held-out set (diagnosed once unseen at 6439289; seen since)",
           "fresh16": "fresh16 held-out set (diagnosed once unseen at 6a827f8; seen since)",
           "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)",
-          "fresh18": "fresh18 held-out set (unseen)"}
+          "fresh18": "fresh18 held-out set (diagnosed once unseen at 95a880a; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
