@@ -18,16 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import inject  # noqa: E402
 import inject_fresh2  # noqa: E402
 import inject_fresh3  # noqa: E402
-import inject_fresh4  # noqa: E402
-import inject_fresh5  # noqa: E402
 import inject_fresh6  # noqa: E402
-import inject_fresh7  # noqa: E402
-import inject_fresh8  # noqa: E402
-import inject_fresh9  # noqa: E402
-import inject_fresh10  # noqa: E402
-import inject_fresh11  # noqa: E402
-import inject_fresh12  # noqa: E402
-import inject_fresh13  # noqa: E402
 import inject_fresh14  # noqa: E402
 import inject_fresh15  # noqa: E402
 import inject_fresh16  # noqa: E402
@@ -35,7 +26,7 @@ import inject_fresh17  # noqa: E402
 import inject_fresh18 as f18  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, earlier_forms, earlier_variants  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z, V = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
@@ -72,12 +63,7 @@ def test_forms_are_registered_and_new(monkeypatch):
     """tests/test_inject_fresh2.py's check (each form found by inject.form_of, none named as in bench/inject.py) with
     this set's forms, and no name of fresh2 to fresh17 either; two forms per effect, four outside; the preset, the
     bases and the variant new."""
-    earlier = [inject_fresh2.FRESH2_FORMS, inject_fresh3.FRESH3_FORMS, inject_fresh4.FRESH4_FORMS,
-               inject_fresh5.FRESH5_FORMS, inject_fresh6.FRESH6_FORMS, inject_fresh7.FRESH7_FORMS,
-               inject_fresh8.FRESH8_FORMS, inject_fresh9.FRESH9_FORMS, inject_fresh10.FRESH10_FORMS,
-               inject_fresh11.FRESH11_FORMS, inject_fresh12.FRESH12_FORMS, inject_fresh13.FRESH13_FORMS,
-               inject_fresh14.FRESH14_FORMS, inject_fresh15.FRESH15_FORMS, inject_fresh16.FRESH16_FORMS,
-               inject_fresh17.FRESH17_FORMS]
+    earlier = earlier_forms(18)
     check_forms_new(f18.FRESH18_FORMS, CHANGES, earlier, monkeypatch)
     assert set(FAINT) <= set(CHANGES)
     from labrig.physics import presets
@@ -388,10 +374,7 @@ def test_cycle_averaged_imports(tmp_path):
 
 def test_deterministic_per_seed():
     """Every form gives the same session twice from the same seed, and another from another."""
-    for _, name, fn in FORMS:
-        a, b, c = run_form(fn, seed=11), run_form(fn, seed=11), run_form(fn, seed=12)
-        assert all(np.array_equal(x.cols[k], y.cols[k]) for x, y in zip(a.recs, b.recs) for k in x.cols), name
-        assert any(not np.array_equal(x.cols[k], z.cols[k]) for x, z in zip(a.recs, c.recs) for k in x.cols), name
+    t2.check_deterministic(FORMS)
 
 
 def test_case_list():
@@ -402,10 +385,7 @@ def test_case_list():
     assert AIR <= {c.form for c in cases if c.base == "s001_125"}  # the forms of a strip in air: on the air base only
     assert not AIR & {c.form for c in cases if c.base != "s001_125"}
     assert not WATER & {c.form for c in cases if c.base == "s001_125"}
-    earlier = set().union(*({c.variant for c in m()} for m in (
-        inject_fresh17.fresh17_cases, inject_fresh16.fresh16_cases, inject_fresh15.fresh15_cases,
-        inject_fresh14.fresh14_cases, inject_fresh13.fresh13_cases, inject_fresh12.fresh12_cases,
-        inject_fresh11.fresh11_cases, inject_fresh10.fresh10_cases)))
+    earlier = earlier_variants(10, 18)
     assert len(earlier) == 23 and earlier <= {c.variant for c in cases}  # every earlier variant used again
     assert len([c for c in cases if c.variant == "cycle_averaged"]) >= 4
     assert len([c for c in cases if c.variant == "cycle_averaged" and c.truth == "none"]) == 2

@@ -66,6 +66,15 @@ def run_form(fn, seed: int = 7, base: inject.Session = BASE) -> inject.Session:
     return s
 
 
+def check_deterministic(forms: list) -> None:
+    """Every form of ``forms`` ((truth, name, fn) each) gives the same session twice from the same seed, and another
+    from another."""
+    for _, name, fn in forms:
+        a, b, c = run_form(fn, seed=11), run_form(fn, seed=11), run_form(fn, seed=12)
+        assert all(np.array_equal(x.cols[k], y.cols[k]) for x, y in zip(a.recs, b.recs) for k in x.cols), name
+        assert any(not np.array_equal(x.cols[k], z.cols[k]) for x, z in zip(a.recs, c.recs) for k in x.cols), name
+
+
 def step_records(s: inject.Session) -> list[inject.Rec]:
     return [r for r in s.series() if r.kind == "step"]
 

@@ -81,6 +81,21 @@ EFFECTS = {"back_relaxation", "faradaic_current", "hysteresis", "time_delay", "s
            "dehydration", "strain_resistance", "large_deflection", "mains_pickup"}
 
 
+def earlier_forms(upto: int) -> list[dict]:
+    """The forms of the held-out sets fresh2 to fresh(upto - 1) (bench/inject_freshN.py's FRESHN_FORMS)."""
+    import importlib
+
+    return [getattr(importlib.import_module(f"inject_fresh{k}"), f"FRESH{k}_FORMS") for k in range(2, upto)]
+
+
+def earlier_variants(first: int, upto: int) -> set[str]:
+    """The data-shape variants the cases of fresh(first) to fresh(upto - 1) use."""
+    import importlib
+
+    return set().union(*({c.variant for c in getattr(importlib.import_module(f"inject_fresh{k}"), f"fresh{k}_cases")()}
+                         for k in range(first, upto)))
+
+
 def check_forms_new(forms: dict, changes: dict, earlier: list[dict], monkeypatch) -> None:
     """tests/test_inject_fresh2.py's check (each form found by inject.form_of, none named as in bench/inject.py) with
     a set's forms and columns, and no name of the ``earlier`` sets' forms; two forms per effect, four outside."""

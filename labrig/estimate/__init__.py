@@ -130,17 +130,18 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
         inflation = float(np.sqrt((nc - 1) / nc * np.mean(per_cycle_var) / nc / _fundamental_variance(tt, f, harmonics, trend)))
     x = _design(tt, f, harmonics, trend)
     coef = np.linalg.lstsq(x, np.asarray(dd, float), rcond=None)[0]
-    noise_var = _noise_variance(dd, np.hstack([x, _mains_columns(tt, f, harmonics)]))
+    wide = np.hstack([x, _mains_columns(tt, f, harmonics)])
+    noise_var = _noise_variance(dd, wide)
+    drive = demodulate(tt, vv, f, harmonics, trend)
     dof = 2 * (nc - 1) if nc > 1 else 0
     if nc == 1 and tt.size > x.shape[1] + 2:
         # one cycle (a logger's averaged period): no scatter between cycles, so the noise is the fit's own residual,
         # carried in the scatter's units (what one cycle's fit with its trend reads: noise_inflation over the record's
         # estimate), with the residual's degrees of freedom; what the residual holds beside noise (harmonics above those
         # modelled) counts as noise, the cautious side
-        wide = np.hstack([x, _mains_columns(tt, f, harmonics)])
         fv = _fundamental_variance(tt, f, harmonics, trend)
         inflation = float(np.sqrt(_fundamental_variance(tt, f, 1) / fv))
-        a_v = abs(demodulate(tt, vv, f, harmonics, trend)[0]) or 1.0
+        a_v = abs(drive[0]) or 1.0
         dn, cn = (float(np.sqrt(var * fv) * inflation / a_v) for var in (noise_var, _noise_variance(ii, wide)))
         dof = max(tt.size - wide.shape[1], 0)
     # the phase of one cycle's fundamental scatters by (its tangential noise) / (its amplitude), at least
@@ -148,7 +149,7 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
         phase_var = noise_var * np.array(per_cycle_var) / 2 / np.array(per_cycle_amp) ** 2
     drift, drift_sigma = _phase_trend(np.array(per_cycle_d), phase_var)
     disp = coef[trend + 1 :].reshape(-1, 2)
-    return SineEstimate(f, demodulate(tt, vv, f, harmonics, trend), demodulate(tt, ii, f, harmonics, trend), disp[:, 0] - 1j * disp[:, 1], dn, cn,
+    return SineEstimate(f, drive, demodulate(tt, ii, f, harmonics, trend), disp[:, 0] - 1j * disp[:, 1], dn, cn,
                         inflation, dof, float(np.mean(dd)) if dd.size else 0.0, drift, drift_sigma)
 
 
@@ -750,7 +751,7 @@ def step_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, t_on: float, t_off
 def harmonic_metrics(t: np.ndarray, v: np.ndarray, d: np.ndarray, f: float, skip_cycles: float = 1.0) -> tuple[float, float]:
     """(displacement amplitude in m, phase lag of displacement behind the drive in degrees) after ``skip_cycles``."""
     sl = _demod_span(np.asarray(t), f, skip_cycles, None)
-    trend = trend_degree(np.asarray(t)[sl], f, 1)
-    a_v = demodulate(np.asarray(t)[sl], np.asarray(v)[sl], f, 1, trend)[0]
-    a_d = demodulate(np.asarray(t)[sl], np.asarray(d)[sl], f, 1, trend)[0]
+    tt, vv, dd = (np.asarray(a)[sl] for a in (t, v, d))
+    trend = trend_degree(tt, f, 1)
+    a_v, a_d = (demodulate(tt, x, f, 1, trend)[0] for x in (vv, dd))
     return float(abs(a_d)), float(-np.degrees(np.angle(a_d / a_v)))
