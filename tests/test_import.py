@@ -146,6 +146,31 @@ def test_a_sine_records_layout_is_read_when_the_manifest_says_it(tmp_path):
     assert got[1] == (0.0, 6.0)
 
 
+def test_a_reading_held_through_a_record_is_left_out_with_a_note(tmp_path):
+    """A sine whose displacement holds one value once it has settled (a frozen logger, a sensor out of range; here up
+    to a float's rounding, as a tare leaves it) carries no noise to weigh it by: left out, named in the notes, and the
+    fit reads the rest. One reading that moves by its last digit is kept."""
+    from labrig.analysis import load_and_fit
+    from labrig.estimate.session_data import load_session
+
+    shutil.copytree(EXAMPLE, tmp_path / "m")
+    sine = tmp_path / "m" / "p612_sine_2Hz.csv"
+    cols = csv_columns(sine)
+    out = {}
+    for name, d in {"held": np.where(cols["t_s"] < 1.0, cols["disp_m"], 1.5e-7 + 1e-22 * (cols["t_s"] > 3)),
+                    "moving": np.where(cols["t_s"] < 1.0, cols["disp_m"], 1.5e-7 + 1e-9 * (cols["t_s"] > 3))}.items():
+        rows = np.column_stack([cols["t_s"], cols["v_V"], cols["i_A"], d])
+        np.savetxt(sine, rows, delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+        out[name] = tmp_path / f"{name}.h5"
+        assert main(["import", str(tmp_path / "m" / "manifest.toml"), "--out", str(out[name])]) == 0
+    held, moving = load_session(out["held"]), load_session(out["moving"])
+    assert [r.kind for r in held.all_records()] == ["step", "step"]
+    assert any("p612/sine_2Hz: displacement constant through the record" in n for n in held.notes), held.notes
+    assert "stepped_sine" in [r.kind for r in moving.all_records()]
+    fit = load_and_fit(out["held"], "fit")[1]
+    assert sorted(fit.specimens) == [612.0, 3062.0] and np.isfinite(fit.line["R"].value), fit.notes
+
+
 @pytest.mark.parametrize("preset", ["paper", "seed001"])
 def test_an_imported_strip_gets_the_prior_of_a_strip_of_its_own_geometry(preset):
     """An import carries the specimen's geometry, not a preset name: the fit's prior must then be what the preset

@@ -268,6 +268,25 @@ def rounded_stamps(t: np.ndarray) -> np.ndarray | None:
     return line if float(np.max(np.abs(t - line))) < 0.5 * slope else None
 
 
+# a channel whose whole record spans less than this reads no signal: orders below any instrument's resolution (a
+# Keyence LK-G's is 10-50 nm, a 24-bit DAQ's 1 uV), and above a float's rounding of a tared or rescaled reading
+RESOLUTION_FLOOR = {"current": 1e-15, "displacement": 1e-12, "drive": 1e-12}  # A, m, V
+
+
+def held_channels(r: TimeRecord) -> list[str]:
+    """The record's channels that read one value throughout (a sine: after its settling cycles), up to a float's
+    rounding (``RESOLUTION_FLOOR``): the responses (current, displacement) of any record, and a sine's drive. The
+    loader leaves out a record whose displacement or drive is held, and keeps one whose current alone is. A live sensor's reading always changes by
+    its noise or at least its last digit, so a reading that never does is held (a frozen logger, a sensor out of
+    range, a hold-last-value export), not measured: its estimate would carry no noise, and every misfit weighed by
+    it is 0/0."""
+    used = slice(None)
+    if r.kind in SINE_KINDS and r.meta.get("frequency_Hz"):  # a sine is estimated after its settling cycles only
+        used = r.t >= r.t[0] + sine_cycles(r)[0] / float(r.meta["frequency_Hz"])
+    chans = [("current", r.i), ("displacement", r.d)] + ([("drive", r.v)] if r.kind in SINE_KINDS else [])
+    return [name for name, x in chans if not float(np.ptp(x[used])) >= RESOLUTION_FLOOR[name]]
+
+
 def load_session(path: str | Path) -> SessionData:
     from labrig.store import SessionReader
 
@@ -306,6 +325,14 @@ def load_session(path: str | Path) -> SessionData:
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
+            flat = held_channels(rec)
+            if set(flat) - {"current"}:
+                notes.append(f"step {st.name}: {' and '.join(flat)} constant through the record (a reading held, "
+                             "frozen or out of range: no noise to weigh it by), not used")
+                continue
+            if flat:  # the displacement is still a measurement: a lab that logs no current may write it as zeros
+                notes.append(f"step {st.name}: current constant through the record (not logged, or held): its current "
+                             "carries no noise to weigh it by")
             grid = rounded_stamps(rec.t)
             if grid is not None:
                 rounded += 1
