@@ -171,6 +171,34 @@ def test_a_reading_held_through_a_record_is_left_out_with_a_note(tmp_path):
     assert sorted(fit.specimens) == [612.0, 3062.0] and np.isfinite(fit.line["R"].value), fit.notes
 
 
+def test_a_faster_scan_clock_holding_each_sample_reads_as_the_samples(tmp_path):
+    """A logger that writes every CSV on a 1 kHz scan clock of its own, each row the latest 100 Hz sample of every channel
+    (nine rows in ten repeats): the repeats are left out with a note, the records come back with their own samples on
+    their own clock, and the sine's estimate is the one of the record as the DAQ wrote it."""
+    from labrig.estimate.session_data import load_session
+
+    shutil.copytree(EXAMPLE, tmp_path / "m")
+    for csv in ("p612_sine_2Hz.csv", "p612_step.csv", "p3062_step.csv"):
+        cols = csv_columns(tmp_path / "m" / csv)
+        t = cols["t_s"]
+        ticks = 0.00037 + np.arange(int((t[-1] - 0.00037) * 1000) + 1) / 1000.0  # the scan's phase not the DAQ's
+        idx = np.searchsorted(t, ticks + 1e-9, side="right") - 1
+        rows = np.column_stack([ticks] + [cols[k][idx] for k in ("v_V", "i_A", "disp_m")])
+        np.savetxt(tmp_path / "m" / csv, rows, delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+    got = {}
+    for name, folder in (("as_written", EXAMPLE), ("scanned", tmp_path / "m")):
+        assert main(["import", str(folder / "manifest.toml"), "--out", str(tmp_path / f"{name}.h5")]) == 0
+        got[name] = load_session(tmp_path / f"{name}.h5")
+    a, b = got["as_written"], got["scanned"]
+    assert not any("scan clock" in n for n in a.notes)
+    assert any("3 records logged on a scan clock faster than their samples" in n for n in b.notes), b.notes
+    for ra, rb in zip(a.all_records(), b.all_records()):
+        assert rb.t.size == ra.t.size - 1 or rb.t.size == ra.t.size, ra.name  # the last sample may fall past the scan's end
+        assert rb.fs == pytest.approx(ra.fs, rel=1e-3)
+    (sa,), (sb,) = a.pressures[0].sines, b.pressures[0].sines
+    assert abs(sb.H_disp / sa.H_disp - 1) < 1e-3 and abs(sb.H_cur / sa.H_cur - 1) < 1e-3
+
+
 @pytest.mark.parametrize("preset", ["paper", "seed001"])
 def test_an_imported_strip_gets_the_prior_of_a_strip_of_its_own_geometry(preset):
     """An import carries the specimen's geometry, not a preset name: the fit's prior must then be what the preset
