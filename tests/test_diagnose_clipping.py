@@ -88,3 +88,21 @@ def test_a_reading_carried_round_its_register_is_found_and_a_strips_response_is_
     assert w["flagged"] and w["channels"] == ["displacement"] and len(w["records"]["displacement"]) == 2
     assert not wrapping(session(True, 1), 2)["flagged"]  # one record's event: a knock, not the recording
     assert not wrapping(session(False, 3), 2)["flagged"]
+
+
+def test_holds_a_memory_predicts_are_the_strips_and_a_rail_on_another_channel_is_not():
+    """A displacement held at its extremes is a rail, unless the first named cause is a memory that predicts the held-out
+    pressures to MEMORY_HOLDS of the baseline's error (a strip stuck in a gel or a bed of beads: 0.05-0.06); a clipped
+    drive or current, or a weaker memory, or another cause, leaves the rail's reading."""
+    from labrig.diagnose.engine import MEMORY_HOLDS, Candidate, _held_by_memory
+
+    def cand(name, ratio):
+        return Candidate(name, {}, -1e4, 1.0, ratio, 1.0)
+
+    disp = {"clipped": {"channels": ["displacement"], "flagged": True}}
+    assert _held_by_memory([cand("hysteresis", 0.05)], disp)
+    assert not _held_by_memory([cand("hysteresis", 1.5 * MEMORY_HOLDS)], disp)  # a memory on a rail: 0.46-0.80 seen
+    assert not _held_by_memory([cand("dehydration", 0.05)], disp)  # no drying holds a reading at its turns
+    assert not _held_by_memory([], disp)
+    assert not _held_by_memory([cand("hysteresis", 0.05)], {"clipped": {"channels": ["drive"], "flagged": True}})
+    assert not _held_by_memory([cand("hysteresis", 0.05)], {"clipped": {"channels": ["current", "displacement"], "flagged": True}})

