@@ -25,6 +25,11 @@ def csv_columns(path):
     return {name: data[:, k] for k, name in enumerate(header)}
 
 
+def write_time_series(path, t, v, i, d):
+    """A time-series CSV of the import format (``csv_columns`` reads it back)."""
+    np.savetxt(path, np.column_stack([t, v, i, d]), delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+
+
 def test_good_manifest_round_trips_every_value(tmp_path):
     out = tmp_path / "imported.h5"
     r = run_cli("import", EXAMPLE / "manifest.toml", "--out", out)
@@ -159,8 +164,7 @@ def test_a_reading_held_through_a_record_is_left_out_with_a_note(tmp_path):
     out = {}
     for name, d in {"held": np.where(cols["t_s"] < 1.0, cols["disp_m"], 1.5e-7 + 1e-22 * (cols["t_s"] > 3)),
                     "moving": np.where(cols["t_s"] < 1.0, cols["disp_m"], 1.5e-7 + 1e-9 * (cols["t_s"] > 3))}.items():
-        rows = np.column_stack([cols["t_s"], cols["v_V"], cols["i_A"], d])
-        np.savetxt(sine, rows, delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+        write_time_series(sine, cols["t_s"], cols["v_V"], cols["i_A"], d)
         out[name] = tmp_path / f"{name}.h5"
         assert main(["import", str(tmp_path / "m" / "manifest.toml"), "--out", str(out[name])]) == 0
     held, moving = load_session(out["held"]), load_session(out["moving"])
@@ -183,8 +187,7 @@ def test_a_faster_scan_clock_holding_each_sample_reads_as_the_samples(tmp_path):
         t = cols["t_s"]
         ticks = 0.00037 + np.arange(int((t[-1] - 0.00037) * 1000) + 1) / 1000.0  # the scan's phase not the DAQ's
         idx = np.searchsorted(t, ticks + 1e-9, side="right") - 1
-        rows = np.column_stack([ticks] + [cols[k][idx] for k in ("v_V", "i_A", "disp_m")])
-        np.savetxt(tmp_path / "m" / csv, rows, delimiter=",", header="t_s,v_V,i_A,disp_m", comments="", fmt="%.10g")
+        write_time_series(tmp_path / "m" / csv, ticks, *(cols[k][idx] for k in ("v_V", "i_A", "disp_m")))
     got = {}
     for name, folder in (("as_written", EXAMPLE), ("scanned", tmp_path / "m")):
         assert main(["import", str(folder / "manifest.toml"), "--out", str(tmp_path / f"{name}.h5")]) == 0

@@ -275,11 +275,11 @@ RESOLUTION_FLOOR = {"current": 1e-15, "displacement": 1e-12, "drive": 1e-12}  # 
 
 def held_channels(r: TimeRecord) -> list[str]:
     """The record's channels that read one value throughout (a sine: after its settling cycles), up to a float's
-    rounding (``RESOLUTION_FLOOR``): the responses (current, displacement) of any record, and a sine's drive. The
-    loader leaves out a record whose displacement or drive is held, and keeps one whose current alone is. A live sensor's reading always changes by
-    its noise or at least its last digit, so a reading that never does is held (a frozen logger, a sensor out of
-    range, a hold-last-value export), not measured: its estimate would carry no noise, and every misfit weighed by
-    it is 0/0."""
+    rounding (``RESOLUTION_FLOOR``): the responses (current, displacement) of any record, and a sine's drive. A live
+    sensor's reading always changes by its noise or at least its last digit, so a reading that never does is held (a
+    frozen logger, a sensor out of range, a hold-last-value export), not measured: its estimate would carry no noise,
+    and every misfit weighed by it is 0/0. The loader leaves out a record whose displacement or drive is held, and
+    keeps one whose current alone is."""
     used = slice(None)
     if r.kind in SINE_KINDS and r.meta.get("frequency_Hz"):  # a sine is estimated after its settling cycles only
         used = r.t >= r.t[0] + sine_cycles(r)[0] / float(r.meta["frequency_Hz"])
@@ -304,9 +304,7 @@ def held_scan(r: TimeRecord) -> np.ndarray | None:
     if r.t.size < 3:
         return None
     same = (np.diff(r.v) == 0) & (np.diff(r.i) == 0) & (np.diff(r.d) == 0)
-    if not float(np.mean(same)) >= HELD_SCAN_SHARE:
-        return None
-    return np.r_[True, ~same]
+    return np.r_[True, ~same] if np.mean(same) >= HELD_SCAN_SHARE else None
 
 
 def load_session(path: str | Path) -> SessionData:
