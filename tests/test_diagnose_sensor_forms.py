@@ -1,5 +1,5 @@
-"""The sixteenth pass' forms (issue 12): the sensor's own low-pass (labrig/diagnose/families.py) and the rest curl
-drifting through the session (labrig/diagnose/arc.py)."""
+"""The sensor-side forms (issue 12): the sensor's own low-pass and the footprint read at its nearest point
+(labrig/diagnose/families.py), the rest curl drifting through the session (labrig/diagnose/arc.py)."""
 
 from types import SimpleNamespace
 
@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from labrig.diagnose.arc import curled_arc, drifting_arc
-from labrig.diagnose.catalogue import Context, frf_by_pressure
-from labrig.diagnose.families import lowpass, lowpass_tf
+from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
+from labrig.diagnose.families import _nearest, lowpass, lowpass_tf
 from labrig.physics import presets, timeresp
 
 PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)
@@ -68,3 +68,22 @@ def test_the_drifting_curl_is_the_curled_arc_read_at_each_records_moment():
     assert abs(drift.hd[0, 0]) < 1e-12
     assert drift.hd[-1, 0] == pytest.approx(last.hd[-1, 0], rel=1e-9)
     assert abs(drift.hd[-1, 0]) > 1e-3  # curled by then: the even harmonic grows through the session
+
+
+def test_the_nearest_point_reads_the_tip_one_way_and_the_edge_the_other():
+    """q = 0: the baseline. q = 0.15: a slow sine read as the tip on its positive half and the edge (0.85 L) on its
+    negative half, y = (1 + k)/2 d + (1 - k)/2 |d| with k the edge's share: the fundamental's gain (1 + k)/2 and a
+    second harmonic (1 - k) 4/(3 pi (1 + k)) of it; the sensor on the other side flips the harmonic's sign."""
+    ctx = _context(freqs=(0.2, 20.0))
+    np.testing.assert_allclose(_nearest(np.array([0.0]), ctx).Hd, ctx.Hd, rtol=1e-12)
+    edge = sensor_read(ctx, sensor_x=0.85 * ctx.length).Hd
+    towards, away = _nearest(np.array([0.15]), ctx), _nearest(np.array([-0.15]), ctx)
+    slow = slice(0, None, 2)  # the 0.2 Hz records: edge and tip in phase
+    k = (edge / ctx.Hd)[slow].real
+    assert np.all((k > 0.5) & (k < 0.95))
+    np.testing.assert_allclose((towards.Hd / ctx.Hd)[slow].real, (1 + k) / 2, rtol=2e-3)
+    np.testing.assert_allclose(np.abs(towards.hd[slow, 0]), (1 - k) * 4 / (3 * np.pi * (1 + k)), rtol=2e-2)
+    lead = towards.hd[slow, 0] * np.conj(ctx.Hd[slow]) / np.abs(ctx.Hd[slow])  # the even part's phase, the tip's taken out
+    assert np.all(lead.real > 0.95 * np.abs(lead))  # + |d|: the crests the taller, towards the sensor
+    np.testing.assert_allclose(away.hd[slow, 0], -towards.hd[slow, 0], rtol=1e-6)
+    np.testing.assert_allclose(away.Hd, towards.Hd, rtol=1e-9)  # the same gain on either side

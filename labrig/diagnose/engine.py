@@ -351,6 +351,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([-0.4, 0.8, 1.0])]  # stop operators
     if ext.form == "transport":
         starts += [np.array([1e-4, 0.45, 0.04, 3.0, 3.0, 0.05])]  # a reduction wave at +-E_half (the first start: a couple at 0 V)
+    if ext.form == "nearest":
+        starts += [np.array([-0.15])]  # the sensor on the other side
     if ext.form == "lowpass":
         starts += [np.array([0.03, 6.0])]  # a longer filter of more poles, towards the delay
     if ext.form == "static_map":

@@ -11,7 +11,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side); Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
-| sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it |
+| sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge; from an onset inside the session; set anew at each clamp setting |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
@@ -317,6 +317,28 @@ def _flag(th, ctx: Context):
     return sensor_read(ctx, sensor_lever=e * ctx.length)
 
 
+def _nearest(th, ctx: Context):
+    """A ranger whose footprint covers the strip from an inboard edge x_e to the tip and reports the footprint's point
+    nearest it (an ultrasonic ranger's first echo, a line-beam head set to its "peak", a capacitive probe's near
+    edge): bending towards it, the tip; bending away, the edge, which moves less. q = 1 - x_e/L signed by the side the
+    sensor faces (q > 0: it reads the tip while the displacement is positive; q = 0: the tip on both sides). The
+    reading the nearer of w(L) and w(x_e) towards the sensor: the sines over one period (fundamental and harmonics:
+    a gain of each half of its own, even harmonics), the step sample by sample."""
+    (q,) = th
+    side, p = (1.0 if q >= 0 else -1.0), baseline(ctx)
+    edge = sensor_read(ctx, sensor_x=(1 - abs(q)) * ctx.length)
+    for k, s in enumerate(ctx.sines):
+        drv = _drive(s)
+        x1 = p.Hd[k] * drv
+        tip, inb = ((H * drv * np.exp(1j * _TH)).real for H in (p.Hd[k], edge.Hd[k]))
+        c = np.fft.fft(side * np.maximum(side * tip, side * inb))[1:4] * 2 / _N
+        x = np.array([0.0, p.hd[k, 0] * x1, p.hd[k, 1] * x1]) + c
+        p.Hd[k], p.hd[k] = x[0] / drv, x[1:] / x[0]
+    for k, (d, e) in enumerate(zip(p.step_d, edge.step_d)):
+        p.step_d[k] = side * np.maximum(side * d, side * e)
+    return p
+
+
 def _form(base: str, form: str, params, x0, lo, hi, apply, describe, **kw) -> Extension:
     return Extension(base, params, x0, lo, hi, apply, describe, form=form, **kw)
 
@@ -456,6 +478,9 @@ FAMILIES["time_delay"] += [
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
           "a rigid flag at the tip read lever e beyond it, w(L) + e w'(L) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
+    _form("sensor_offset", "nearest", ("edge_inboard_over_L",), (0.15,), (-0.7,), (0.7,), _nearest,
+          "a footprint from the tip to an edge q L inboard, read at its point nearest the sensor: the tip bending towards "
+          "it, the edge bending away (q's sign: the side it faces; alpha, gamma, K_t bar refitted)", refit_mechanics=True),
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
