@@ -18,9 +18,10 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
-from labrig.diagnose.artefacts import artefacts, detail as artefact_detail, level as artefact_level
+from labrig.diagnose.artefacts import MIN_RECORDS, artefacts, detail as artefact_detail, level as artefact_level
 from labrig.diagnose.catalogue import CATALOGUE, Context, Extension, Prediction, baseline, by_records
 from labrig.diagnose.line_levels import line_arrays, line_levels
+from labrig.diagnose.monitor import detail as monitor_detail, drive_monitor
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
 from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
@@ -715,6 +716,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         structure["step_window"] = step_window["level"]
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
+    monitor = drive_monitor(feats.sines, MIN_RECORDS)
     if rival is not None:
         verdict, cause = "unexplained", None
         confidence = float(min(1.0, max(0.0, 1.0 - rival.fit.heldout_ratio / max(rival.instead_of.heldout_ratio, 1e-9))))
@@ -722,6 +724,11 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         # the displacement is not periodic at the drive's frequency: whatever a catalogued extension gains on it,
         # the cause is the recording's (docs/diagnosis.md, "The recording's clock")
         verdict, cause, confidence = "unexplained", None, float(1.0 - CLOCK_Z / max(abs(clock["z"]), CLOCK_Z))
+        named, accepted = [], []
+    elif monitor["flagged"]:
+        # the recorded drive carries harmonics the current does not: the record is not the drive the strip felt, and
+        # a model driven by it predicts what is not there (monitor.py)
+        verdict, cause, confidence = "unexplained", None, 1.0
         named, accepted = [], []
     elif (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)) or recording["wrapped"]["flagged"]:
         # a channel held at the end of its range or carried round it: the features read there are the converter's, not
@@ -755,6 +762,10 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         residual_where.insert(0, {"block": "clock", "level": abs(clock["z"]), "over_accuracy": abs(clock["z"]) / CLOCK_Z,
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
+    if monitor["flagged"]:
+        w = monitor["worst"]
+        residual_where.insert(0, {"block": "drive_monitor", "level": w["drive_share"] / monitor["share_limit"],
+                                  "over_accuracy": w["drive_share"] / monitor["share_limit"], "detail": monitor_detail(monitor)})
     if rival is not None:
         residual_where.insert(0, rival_detail(drive_path))
     if recording["flagged"]:
@@ -783,6 +794,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
                      "heldout_nrmse": best.heldout_nrmse, "params": best.params, "accepted": bool(named)},
         "clock": clock,
         "recording": recording,
+        "drive_monitor": monitor,
         # a distortion of the drive before the strip, which took the verdict from a named cause (rivals.py)
         "drive_path": drive_path,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,

@@ -63,7 +63,7 @@ def _pressure_label(p: float | None) -> str:
 
 
 # ``residual.where`` entries that are findings, not a block's residual: their level is not in units of an accuracy
-FINDINGS = frozenset({"drive", "clock", "recording"})
+FINDINGS = frozenset({"drive", "clock", "recording", "drive_monitor"})
 
 
 def where_text(w: dict[str, Any], accuracy: str = "its attainable accuracy") -> str:
