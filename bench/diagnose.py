@@ -165,7 +165,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)",
           "fresh18": "fresh18 held-out set (diagnosed once unseen at 95a880a; seen since)",
           "fresh19": "fresh19 held-out set (diagnosed once unseen at 5ab0d14; seen since)",
-          "fresh20": "fresh20 held-out set (unseen: no threshold saw it)"}
+          "fresh20": "fresh20 held-out set (diagnosed once unseen at b08be25; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
