@@ -342,8 +342,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.5, 3.0]), np.array([0.5, 30.0]), np.array([0.8, 2.0, 0.6]), np.array([0.8, 30.0, 0.6])]
     if name == "time_delay":
         starts += [np.array([0.02]), np.array([-0.02])]
-    if name == "sensor_offset":
-        starts += [np.array([0.6])]
+    if name == "sensor_offset" and ext.form != "nearest":
+        starts += [np.array([0.6])]  # a spot or flag well inboard (the footprint's edge starts either side of the tip instead)
     if name == "faradaic_current":
         starts += [np.array([3e-4, 0.1, 0.9]), np.array([3e-4, 0.1, 0.1])]
     if name == "hysteresis":
