@@ -108,6 +108,8 @@ class Extension:
     start: Callable[[Context], np.ndarray] | None = None
     # parameters fitted inside the prediction on every record (a pickup's level per record), counted in DeltaBIC
     inner_dof: Callable[[Context], int] | None = None
+    # blocks of which the base must miss one for the form to be fitted (empty: any): a form whose signature sits there
+    needs: frozenset[str] = frozenset()
 
 
 def _drive(s: SineFeature) -> complex:

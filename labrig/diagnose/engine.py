@@ -430,6 +430,7 @@ class _Scorer:
             # it cannot be named (nothing missed: no form gets below 1; a current cause needs the current missed,
             # _significant; a family of ONLY_BLOCKS none of which is missed): the catalogue's form alone, for the record
             family = family[:1]
+        family = [family[0], *(ext for ext in family[1:] if not ext.needs or set(self.where) & ext.needs)]
         forms = [self.score_form(name, ext) for ext in family]
         best = on_base = min(forms, key=_choice)
         if name in AT_THE_CLAMP and len(family) > 1 and min(fitted_pressures(self.ctx_fit), fitted_pressures(self.ctx_held)) >= 2 and best.ext is not None:

@@ -480,7 +480,8 @@ FAMILIES["sensor_offset"] += [
           "a rigid flag at the tip read lever e beyond it, w(L) + e w'(L) (alpha, gamma, K_t bar refitted)", refit_mechanics=True),
     _form("sensor_offset", "nearest", ("edge_inboard_over_L",), (0.15,), (-0.7,), (0.7,), _nearest,
           "a footprint from the tip to an edge q L inboard, read at its point nearest the sensor: the tip bending towards "
-          "it, the edge bending away (q's sign: the side it faces; alpha, gamma, K_t bar refitted)", refit_mechanics=True),
+          "it, the edge bending away (q's sign: the side it faces; alpha, gamma, K_t bar refitted)", refit_mechanics=True,
+          needs=frozenset({"harm_d"})),  # a gain of each half its own: a 2nd harmonic of (1 - k) 4/(3 pi (1 + k)), 5 % at k 0.8
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
