@@ -764,9 +764,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
                                   "detail": f"the displacement runs {clock['relative_offset']:+.3%} off the drive's frequency in "
                                             f"{clock['records']} sine records: a sensor on a clock of its own", "relative_offset": clock["relative_offset"]})
     if monitor["flagged"]:
-        w = monitor["worst"]
-        residual_where.insert(0, {"block": "drive_monitor", "level": w["drive_share"] / monitor["share_limit"],
-                                  "over_accuracy": w["drive_share"] / monitor["share_limit"], "detail": monitor_detail(monitor)})
+        level = monitor["worst"]["drive_share"] / monitor["share_limit"]
+        residual_where.insert(0, {"block": "drive_monitor", "level": level, "over_accuracy": level, "detail": monitor_detail(monitor)})
     if rival is not None:
         residual_where.insert(0, rival_detail(drive_path))
     if recording["flagged"]:

@@ -219,6 +219,14 @@ def _pi_drive(th, ctx: Context):
 # ------------------------------------------------------------------------------------------ strain as a gain loss
 
 
+def _read_as(H: np.ndarray, h: np.ndarray, k: int, drv: complex, y: np.ndarray) -> None:
+    """Sine record k read as ``y`` over one period (at ``_TH``) instead of its linear fundamental: y's first three
+    harmonics added to the baseline's own, written back as the FRF ``H[k]`` and the harmonic ratios ``h[k]``."""
+    x1 = H[k] * drv
+    x = np.array([0.0, h[k, 0] * x1, h[k, 1] * x1]) + np.fft.fft(y)[1:4] * 2 / _N
+    H[k], h[k] = x[0] / drv, x[1:] / x[0]
+
+
 def _strain_modulation(th, ctx: Context):
     """Electrode resistance rising with the bend, read as an instantaneous loss of gain on displacement and current:
     y = y_lin (1 - k e), e = 2 (a max(d, 0) + (1 - a) max(-d, 0)) / L (a = 0.5: both electrodes alike; a -> 0 or 1:
@@ -236,10 +244,7 @@ def _strain_modulation(th, ctx: Context):
         drv = _drive(s)
         e = bend(s.bend_m + (p.Hd[k] * drv * np.exp(1j * _TH)).real)
         for H, h, gain in ((p.Hd, p.hd, kd), (p.Hi, p.hi, ki)):
-            x1 = H[k] * drv
-            c = np.fft.fft((x1 * np.exp(1j * _TH)).real * (1 - gain * e))[1:4] * 2 / _N
-            x = np.array([0.0, h[k, 0] * x1, h[k, 1] * x1]) + c
-            H[k], h[k] = x[0] / drv, x[1:] / x[0]
+            _read_as(H, h, k, drv, (H[k] * drv * np.exp(1j * _TH)).real * (1 - gain * e))
     for k, d in enumerate(p.step_d):
         e = bend(d)
         p.step_d[k], p.step_i[k] = d * (1 - kd * e), p.step_i[k] * (1 - ki * e)
@@ -329,11 +334,8 @@ def _nearest(th, ctx: Context):
     edge = sensor_read(ctx, sensor_x=(1 - abs(q)) * ctx.length)
     for k, s in enumerate(ctx.sines):
         drv = _drive(s)
-        x1 = p.Hd[k] * drv
         tip, inb = ((H * drv * np.exp(1j * _TH)).real for H in (p.Hd[k], edge.Hd[k]))
-        c = np.fft.fft(side * np.maximum(side * tip, side * inb))[1:4] * 2 / _N
-        x = np.array([0.0, p.hd[k, 0] * x1, p.hd[k, 1] * x1]) + c
-        p.Hd[k], p.hd[k] = x[0] / drv, x[1:] / x[0]
+        _read_as(p.Hd, p.hd, k, drv, side * np.maximum(side * tip, side * inb))
     for k, (d, e) in enumerate(zip(p.step_d, edge.step_d)):
         p.step_d[k] = side * np.maximum(side * d, side * e)
     return p
