@@ -22,8 +22,10 @@ With ``watchdog_s`` the device's own watchdog timer puts 0 V out when this host 
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
+import threading
 import uuid
 from contextlib import contextmanager
 from typing import Any, Iterator
@@ -70,6 +72,18 @@ def _digest(a: np.ndarray | None) -> str | None:
     return None if a is None else hashlib.sha256(to_bytes(a)).hexdigest()
 
 
+def _one_at_a_time(method: Any) -> Any:
+    """Hold the driver's task lock for the call: an emergency stop may come from the force logger's thread
+    while the run's thread sets up or reads a record; the two must not release each other's tasks midway."""
+
+    @functools.wraps(method)
+    def locked(self: "Daq", *args: Any, **kwargs: Any) -> Any:
+        with self._io:
+            return method(self, *args, **kwargs)
+
+    return locked
+
+
 class Daq(Instrument):
     """AO drive + 3 AI channels on one NI DAQ device, SI units in and out."""
 
@@ -104,6 +118,9 @@ class Daq(Instrument):
         if grpc_target is not None and replay is None:
             self._channel = grpc.insecure_channel(grpc_target, options=CHANNEL_OPTIONS)
         self._tasks: list[nidaqmx.Task] = []
+        # one caller at a time on the tasks: the force logger's emergency stop may come from its own thread
+        # while the run's thread sets up or reads a record (re-entrant: safe() runs inside a failed read)
+        self._io = threading.RLock()
         self._reader: AnalogMultiChannelReader | None = None
         self._fs = 0.0
         self._pos = 0  # samples per channel read since start_continuous
@@ -189,6 +206,7 @@ class Daq(Instrument):
     def _phys(self, ch: str) -> str:
         return f"{self.device}/{ch}"
 
+    @_one_at_a_time
     def _release(self) -> None:
         """Stop and clear every task (best effort: a dead server must not hide the caller's error)."""
         tasks, self._tasks, self._reader = self._tasks, [], None
@@ -278,7 +296,7 @@ class Daq(Instrument):
         done = False
         self._release()
         try:
-            with self._errors("run_finite"):
+            with self._io, self._errors("run_finite"):
                 self._fs = fs
                 ao = self._setup(fs, AcquisitionType.FINITE, n, drive, self._wall(n / fs + READ_MARGIN_S))
                 assert self._reader is not None and ao is not None
@@ -287,13 +305,15 @@ class Daq(Instrument):
                 k = min(per, n - pos)
                 raw = np.zeros((3, k))
                 wait = self._wall(k / fs + READ_MARGIN_S) if total_wall is None else total_wall
-                with self._errors("run_finite"):
+                with self._io, self._errors("run_finite"):
+                    if self._reader is None:  # released under us (an emergency stop from another thread)
+                        raise InstrumentErrorReply(self.name, "run_finite: the record was stopped (the drive was made safe)")
                     self._reader.read_many_sample(raw, k, timeout=wait)
                 block = self._scale(raw, pos)
                 parts.append(block)
                 pos += k
                 yield block
-            with self._errors("run_finite"):
+            with self._io, self._errors("run_finite"):
                 ao.wait_until_done(timeout=self._wall(READ_MARGIN_S))
             done = True
         finally:
@@ -313,7 +333,7 @@ class Daq(Instrument):
         def run() -> bytes:
             self._release()
             try:
-                with self._errors("start_continuous"):
+                with self._io, self._errors("start_continuous"):
                     self._setup(fs, AcquisitionType.CONTINUOUS, max(1000, int(fs * buffer_s)), drive, self._wall(10.0))
             except BaseException:
                 self.safe()
@@ -334,7 +354,7 @@ class Daq(Instrument):
                 raise InstrumentErrorReply(self.name, "read_block: no continuous acquisition running")
             raw = np.zeros((3, n))
             try:
-                with self._errors("read_block"):
+                with self._io, self._errors("read_block"):
                     self._reader.read_many_sample(raw, n, timeout=self._wall(timeout_s))
             except BaseException:
                 self.safe()
@@ -357,6 +377,7 @@ class Daq(Instrument):
 
         self._call("stop", {}, run)
 
+    @_one_at_a_time
     def _zero(self) -> None:
         """0 V on the drive through an on-demand AO task (timed tasks are released first: they reserve it)."""
         self._release()
@@ -380,6 +401,11 @@ class Daq(Instrument):
 
     has_output = True  # the drive
 
+    def held(self) -> threading.RLock:
+        """The task lock: no other thread's record starts between this thread's calls (0 V written, read back)."""
+        return self._io
+
+    @_one_at_a_time
     def safe(self) -> bool:
         """Emergency stop: release everything and try to put 0 V out. Never raises; True if 0 V was confirmed."""
         if self._replay is not None:
@@ -439,6 +465,7 @@ class Daq(Instrument):
         if wd is not None:
             wd.disarm()
 
+    @_one_at_a_time
     def drive_readback_V(self, n: int = 20, fs: float = 1000.0, timeout_s: float = 10.0) -> float:
         """The drive as the strip sees it: the mean of ``n`` samples of the voltage AI channel (releases what
         runs first). Raises ``Disconnected`` etc. when it cannot be read: then the drive state is unknown.

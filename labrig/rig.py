@@ -12,6 +12,7 @@ Rig file (TOML), as ``labrig sim --rig-out`` writes it::
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -144,6 +145,8 @@ class Rig:
     clock: ScaledClock
     instruments: dict[str, Instrument] = field(default_factory=dict)
     transcript: Transcript = field(default_factory=Transcript)
+    # one safe() at a time: the force logger's thread and the run's thread may both make the rig safe at once
+    _safe_lock: threading.RLock = field(default_factory=threading.RLock, repr=False, compare=False)
 
     @property
     def daq(self) -> Any:  # drivers.daq.Daq
@@ -206,6 +209,10 @@ class Rig:
         Every instrument with an output (``Instrument.has_output``: the drive, the analyser's source) is made
         safe, the drive first. The drive counts as safe only when read back at 0 V (``SafeState.verified``):
         ``safe()``'s own word is not enough, since a write to a dead link cannot be confirmed."""
+        with self._safe_lock, self.daq.held():  # 0 V written and read back with no record started between
+            return self._safe()
+
+    def _safe(self) -> SafeState:
         problems = []
         for name, dev in self.instruments.items():
             if not dev.has_output:

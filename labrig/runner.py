@@ -103,6 +103,7 @@ class Runner:
         self.steps: list[Step] = []
         self._inflight: dict[str, Any] = {}  # what the step in flight has stored so far (for its StepEnd)
         self._recording = threading.Event()  # a record is streaming: its loop checks the force logger per block
+        self._record_gate = threading.Lock()  # the force logger's "not recording: make safe now" is one act
         self._wd_failures = self._watchdog_failures()  # the DAQ watchdog's failed resets when the run began
 
     # ------------------------------------------------------------------------------ events
@@ -326,8 +327,10 @@ class Runner:
         self._check_watchdog()
         emitter = _BlockEmitter(self, index)
         i_peak = d_peak = 0.0
-        self._recording.set()
+        with self._record_gate:  # after the logger's own safe(), if it tripped first: never during the record
+            self._recording.set()
         try:
+            logger.raise_if_tripped()  # tripped before the record began: no drive at all
             with closing(rig.daq.stream_finite(a.drive_V, a.fs_Hz)) as stream:
                 for out in stream:
                     block = {k: out[k] for k in DAQ_COLUMNS}  # the driver's names are the stored ones
@@ -437,8 +440,9 @@ class _ForceLogger:
         while not self._stop.wait(period_wall):
             self._sample()
             if self._trip is not None:
-                if not self.r._recording.is_set():  # a record's loop acts on it within a block, in order
-                    self.r.rig.safe()  # over-force or a dead load cell: drive to 0 V now, not at step end
+                with self.r._record_gate:  # a record's loop acts on it within a block, in order
+                    if not self.r._recording.is_set():
+                        self.r.rig.safe()  # over-force or a dead load cell: drive to 0 V now, not at step end
                 return
             if clock.now() - last_emit > 5.0:
                 self._flush()

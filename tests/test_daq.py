@@ -272,3 +272,37 @@ def test_with_the_simulated_world() -> None:
         rig.stop()
         assert blocks[2]["t_s"][0] == pytest.approx(2.0)
         assert sim.ao_output_V() == 0.0
+
+
+def test_an_emergency_stop_from_another_thread_stops_a_record_cleanly() -> None:
+    """The force logger makes the rig safe from its own thread while the run's thread may be setting up or reading
+    a record. Each record then completes or stops with an instrument error (never a half-released task); every
+    0 V write succeeds and is read back, so the driver never gives the drive up to the card's watchdog."""
+    from drivers.errors import InstrumentError
+    from labrig.simulate import simulated_rig
+
+    with simulated_rig() as (rig, sims):
+        stop, states, outcomes = threading.Event(), [], []
+
+        def emergency_stops() -> None:
+            while not stop.is_set():
+                states.append(rig.safe())
+                time.sleep(0.003)
+
+        th = threading.Thread(target=emergency_stops, daemon=True)
+        th.start()
+        try:
+            for _ in range(30):
+                try:
+                    rig.daq.run_finite(np.full(300, 0.1), 1000.0)
+                    outcomes.append("done")
+                except InstrumentError:
+                    outcomes.append("stopped")
+        finally:
+            stop.set()
+            th.join()
+        assert len(states) > 10 and "stopped" in outcomes  # the two threads did meet
+        assert [s.line() for s in states if s.problems or not s.verified] == []
+        assert rig.daq.watchdog.failed_resets == 0 and not rig.daq.watchdog.expired()
+        out = rig.daq.run_finite(np.full(300, 0.1), 1000.0)  # and the driver records as before
+        assert np.allclose(out["v_V"], 0.1, atol=5e-3)
