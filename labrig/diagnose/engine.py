@@ -647,6 +647,15 @@ def _held_by_memory(named: list[Candidate], recording: dict[str, Any]) -> bool:
             and recording["clipped"]["channels"] == ["displacement"])
 
 
+def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording: dict[str, Any],
+                       named: list[Candidate]) -> bool:
+    """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
+    of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
+    or carried round it."""
+    return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"]
+                or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
+
+
 def split(feats: Features) -> tuple[set, set]:
     ps = feats.pressures()
     if len(ps) >= 2:
@@ -677,9 +686,13 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     drive_path = None if rival is None else rival.report()
     if rival is not None:
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
+    clock = clock_offset(feats.sines, FRF_FLOOR)
+    recording = artefacts(sd)
+    monitor = drive_monitor(feats.sines, MIN_RECORDS)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
-    # effect is judged against what the first leaves, not against a residual it cannot explain
-    accepted = list(named[:1])
+    # effect is judged against what the first leaves, not against a residual it cannot explain (not where the
+    # recording itself takes the verdict: no cause is accepted there, so no further round is fitted)
+    accepted = [] if _recording_decides(clock, monitor, recording, named) else list(named[:1])
     cf, ch = ctx_fit, ctx_held
     adopted = 0
     while accepted and len(accepted) < 3:
@@ -715,9 +728,6 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     step_window = step_windows([ctx_fit] if same else [ctx_fit, verdict_ctx])
     if step_window is not None and step_window["level"] > STRUCTURE_MARGIN:
         structure["step_window"] = step_window["level"]
-    clock = clock_offset(feats.sines, FRF_FLOOR)
-    recording = artefacts(sd)
-    monitor = drive_monitor(feats.sines, MIN_RECORDS)
     if rival is not None:
         verdict, cause = "unexplained", None
         confidence = float(min(1.0, max(0.0, 1.0 - rival.fit.heldout_ratio / max(rival.instead_of.heldout_ratio, 1e-9))))
@@ -731,7 +741,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         # a model driven by it predicts what is not there (monitor.py)
         verdict, cause, confidence = "unexplained", None, 1.0
         named, accepted = [], []
-    elif (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)) or recording["wrapped"]["flagged"]:
+    elif _recording_decides(clock, monitor, recording, named):  # here: a channel clipped or wrapped
         # a channel held at the end of its range or carried round it: the features read there are the converter's, not
         # the strip's, and a cause named from them would be named from the clipping or the wrap (clipping.py)
         verdict, cause, confidence = "unexplained", None, 1.0
