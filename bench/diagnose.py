@@ -69,8 +69,11 @@
 * Fresh20 held-out set (``--set fresh20``, bench/inject_fresh20.py ``fresh20_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 130-132, the paper
   strip 24 mm free, a new data shape (every table through a spreadsheet at a fixed number of decimals).
+* Fresh21 held-out set (``--set fresh21``, bench/inject_fresh21.py ``fresh21_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 133-135, the paper
+  strip 22 mm free, a new data shape (each step record stopped by its trigger 0.3-2 s after the drive's fall).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -165,7 +168,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh17": "fresh17 held-out set (diagnosed once unseen at fc66228; seen since)",
           "fresh18": "fresh18 held-out set (diagnosed once unseen at 95a880a; seen since)",
           "fresh19": "fresh19 held-out set (diagnosed once unseen at 5ab0d14; seen since)",
-          "fresh20": "fresh20 held-out set (diagnosed once unseen at b08be25; seen since)"}
+          "fresh20": "fresh20 held-out set (diagnosed once unseen at b08be25; seen since)",
+          "fresh21": "fresh21 held-out set (unseen: its first run)"}
 
 
 def validation(a, name: str = "validation") -> list:
