@@ -169,7 +169,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh18": "fresh18 held-out set (diagnosed once unseen at 95a880a; seen since)",
           "fresh19": "fresh19 held-out set (diagnosed once unseen at 5ab0d14; seen since)",
           "fresh20": "fresh20 held-out set (diagnosed once unseen at b08be25; seen since)",
-          "fresh21": "fresh21 held-out set (unseen: its first run)"}
+          "fresh21": "fresh21 held-out set (diagnosed once unseen at fdb2182; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
