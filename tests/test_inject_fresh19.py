@@ -22,7 +22,7 @@ import inject_fresh18  # noqa: E402
 import inject_fresh19 as f19  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
@@ -71,16 +71,7 @@ def test_forms_are_registered_and_new(monkeypatch):
     earlier = earlier_forms(19)
     check_forms_new(f19.FRESH19_FORMS, CHANGES, earlier, monkeypatch)
     assert set(FAINT) <= set(CHANGES)
-    from labrig.physics import presets
-
-    assert "paper_27" in presets.names() and presets.get("paper_27").base.geometry.length == pytest.approx(0.027)
-    others = [presets.get(n).base.geometry.length for n in presets.names() if n != "paper_27"]
-    assert all(abs(x - 0.027) > 1e-6 for x in others)
-    assert inject.BASES["p27_129"] == ("paper-sweep", "paper_27", 129)
-    assert inject.VARIANTS["scan_hold"] is f19.v_scan_hold
-    import importlib
-
-    assert all(getattr(importlib.import_module(f"inject_fresh{k}"), "v_scan_hold", None) is None for k in range(2, 19))
+    check_new_strip_and_variant(19, "paper_27", 0.027, "p27_129", 129, "scan_hold", f19.v_scan_hold)
 
 
 def test_amplitude_and_rate_dependent_forms(monkeypatch):

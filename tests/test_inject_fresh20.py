@@ -19,7 +19,7 @@ import inject  # noqa: E402
 import inject_fresh20 as f20  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z, DRIVE = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
@@ -73,17 +73,7 @@ def test_forms_are_registered_and_new(monkeypatch):
     length no other preset has), the bases and the variant new."""
     check_forms_new(f20.FRESH20_FORMS, CHANGES, earlier_forms(20), monkeypatch)
     assert set(FAINT) <= set(CHANGES)
-    from labrig.physics import presets
-
-    assert "paper_24" in presets.names() and presets.get("paper_24").base.geometry.length == pytest.approx(0.024)
-    others = [presets.get(n).base.geometry.length for n in presets.names() if n != "paper_24"]
-    assert all(abs(x - 0.024) > 1e-6 for x in others)
-    assert inject.BASES["p24_132"] == ("paper-sweep", "paper_24", 132)
-    assert inject.VARIANTS["fixed_decimals"] is f20.v_fixed_decimals
-    import importlib
-
-    assert all(getattr(importlib.import_module(f"inject_fresh{k}"), "v_fixed_decimals", None) is None
-               for k in range(2, 20))
+    check_new_strip_and_variant(20, "paper_24", 0.024, "p24_132", 132, "fixed_decimals", f20.v_fixed_decimals)
 
 
 def test_amplitude_and_rate_dependent_forms(monkeypatch):

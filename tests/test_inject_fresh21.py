@@ -20,7 +20,7 @@ import inject_fresh21 as f21  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from inject_fresh15 import _edges  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
@@ -69,17 +69,7 @@ def test_forms_are_registered_and_new(monkeypatch):
     length no other preset has), the bases and the variant new."""
     check_forms_new(f21.FRESH21_FORMS, CHANGES, earlier_forms(21), monkeypatch)
     assert set(FAINT) <= set(CHANGES)
-    from labrig.physics import presets
-
-    assert "paper_22" in presets.names() and presets.get("paper_22").base.geometry.length == pytest.approx(0.022)
-    others = [presets.get(n).base.geometry.length for n in presets.names() if n != "paper_22"]
-    assert all(abs(x - 0.022) > 1e-6 for x in others)
-    assert inject.BASES["p22_135"] == ("paper-sweep", "paper_22", 135)
-    assert inject.VARIANTS["stop_trigger"] is f21.v_stop_trigger
-    import importlib
-
-    assert all(getattr(importlib.import_module(f"inject_fresh{k}"), "v_stop_trigger", None) is None
-               for k in range(2, 21))
+    check_new_strip_and_variant(21, "paper_22", 0.022, "p22_135", 135, "stop_trigger", f21.v_stop_trigger)
 
 
 def test_amplitude_and_rate_dependent_forms(monkeypatch):

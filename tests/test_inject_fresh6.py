@@ -108,6 +108,21 @@ def check_forms_new(forms: dict, changes: dict, earlier: list[dict], monkeypatch
     assert all(len(named) == (4 if t == "unexplained" else 2) for t, named in forms.items())
 
 
+def check_new_strip_and_variant(set_no: int, preset: str, length_m: float, base: str, seed: int, variant: str, fn) -> None:
+    """A set's own strip, base and data shape: ``preset`` a free length no other preset has, ``base`` the paper sweep on
+    it with ``seed``, ``variant`` registered as ``fn`` and no earlier set's module defining a function of its name."""
+    import importlib
+
+    from labrig.physics import presets
+
+    assert preset in presets.names() and presets.get(preset).base.geometry.length == pytest.approx(length_m)
+    others = [presets.get(n).base.geometry.length for n in presets.names() if n != preset]
+    assert all(abs(x - length_m) > 1e-6 for x in others)
+    assert inject.BASES[base] == ("paper-sweep", preset, seed)
+    assert inject.VARIANTS[variant] is fn
+    assert all(getattr(importlib.import_module(f"inject_fresh{k}"), f"v_{variant}", None) is None for k in range(2, set_no))
+
+
 def check_case_list(cases_of, forms: dict, seeds: set, variant: str) -> list:
     """A set of 34 cases with distinct names: every form once (outside structures twice), six clean, on its seeds,
     bases and variants registered, its new variant used, ``cases_of("none")`` the clean ones. Returns the cases."""
