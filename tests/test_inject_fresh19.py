@@ -22,7 +22,7 @@ import inject_fresh18  # noqa: E402
 import inject_fresh19 as f19  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_bases_and_variants, check_new_strip_and_variant, earlier_forms  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
@@ -348,19 +348,7 @@ def test_deterministic_per_seed():
 
 def test_case_list():
     cases = check_case_list(f19.fresh19_cases, f19.FRESH19_FORMS, {127, 128, 129}, "scan_hold")
-    assert {c.base for c in cases} == {"paper_127", "s001_128", "p27_129"}
-    assert inject.BASES["s001_128"][1] == "seed001" and inject.BASES["paper_127"] == ("paper-sweep", "paper", 127)
-    assert all(c.seed == inject.BASES[c.base][2] for c in cases)  # each case on its seed's base
-    assert AIR <= {c.form for c in cases if c.base == "s001_128"}  # the forms of a strip in air: on the air base only
-    assert not AIR & {c.form for c in cases if c.base != "s001_128"}
-    assert not WATER & {c.form for c in cases if c.base == "s001_128"}
-    earlier = earlier_variants(10, 19)
-    assert len(earlier) == 24 and earlier <= {c.variant for c in cases}  # every earlier variant used again
-    assert "scan_hold" not in earlier
-    assert len([c for c in cases if c.variant == "scan_hold"]) >= 4
-    assert len([c for c in cases if c.variant == "scan_hold" and c.truth == "none"]) == 2
-    force = {c.form for c in cases if c.truth == "clamp_relaxation"}
-    assert not force & {c.form for c in cases if c.variant == "no_loadcell"}  # the clamp forms keep the load cell
+    check_bases_and_variants(cases, 19, (127, 128, 129), AIR, WATER, "scan_hold")
     mains = {c.form for c in cases if c.truth == "mains_pickup"}
     averaging = ("coherent_sines", "decimated3", "resampled", "fir_decimated", "swinging_door", "cycle_averaged",
                  "scan_hold")

@@ -19,7 +19,7 @@ import inject  # noqa: E402
 import inject_fresh20 as f20  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_bases_and_variants, check_new_strip_and_variant, earlier_forms  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z, DRIVE = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}, {"v_V"}
@@ -339,20 +339,8 @@ def test_deterministic_per_seed():
 
 def test_case_list():
     cases = check_case_list(f20.fresh20_cases, f20.FRESH20_FORMS, {130, 131, 132}, "fixed_decimals")
-    assert {c.base for c in cases} == {"paper_130", "s001_131", "p24_132"}
-    assert inject.BASES["s001_131"][1] == "seed001" and inject.BASES["paper_130"] == ("paper-sweep", "paper", 130)
-    assert all(c.seed == inject.BASES[c.base][2] for c in cases)  # each case on its seed's base
-    assert AIR <= {c.form for c in cases if c.base == "s001_131"}  # the forms of a strip in air: on the air base only
-    assert not AIR & {c.form for c in cases if c.base != "s001_131"}
-    assert not WATER & {c.form for c in cases if c.base == "s001_131"}
-    earlier = earlier_variants(10, 20)
-    assert len(earlier) == 25 and earlier <= {c.variant for c in cases}  # every earlier variant used again
-    assert "fixed_decimals" not in earlier
-    assert len([c for c in cases if c.variant == "fixed_decimals"]) >= 4
-    assert len([c for c in cases if c.variant == "fixed_decimals" and c.truth == "none"]) == 2
+    check_bases_and_variants(cases, 20, (130, 131, 132), AIR, WATER, "fixed_decimals")
     assert {c.truth for c in cases if c.variant == "fixed_decimals"} >= {"none", "unexplained"}
-    force = {c.form for c in cases if c.truth == "clamp_relaxation"}
-    assert not force & {c.form for c in cases if c.variant == "no_loadcell"}  # the clamp forms keep the load cell
     mains = {c.form for c in cases if c.truth == "mains_pickup"}
     averaging = ("coherent_sines", "decimated3", "resampled", "fir_decimated", "swinging_door", "cycle_averaged",
                  "scan_hold", "fixed_decimals")

@@ -20,7 +20,7 @@ import inject_fresh21 as f21  # noqa: E402
 import test_inject_fresh2 as t2  # noqa: E402
 from inject_fresh15 import _edges  # noqa: E402
 from test_inject_fresh2 import BASE, run_form  # noqa: E402
-from test_inject_fresh6 import check_case_list, check_forms_new, check_new_strip_and_variant, earlier_forms, earlier_variants  # noqa: E402
+from test_inject_fresh6 import check_case_list, check_forms_new, check_bases_and_variants, check_new_strip_and_variant, earlier_forms  # noqa: E402
 from test_inject_fresh14 import _line, _rec, _session, _sine  # noqa: E402
 
 DISP, CUR, FORCE, Z = {"disp_m"}, {"i_A"}, {"force_N"}, {"z_re_ohm", "z_im_ohm"}
@@ -353,20 +353,8 @@ def test_deterministic_per_seed():
 
 def test_case_list():
     cases = check_case_list(f21.fresh21_cases, f21.FRESH21_FORMS, {133, 134, 135}, "stop_trigger")
-    assert {c.base for c in cases} == {"paper_133", "s001_134", "p22_135"}
-    assert inject.BASES["s001_134"][1] == "seed001" and inject.BASES["paper_133"] == ("paper-sweep", "paper", 133)
-    assert all(c.seed == inject.BASES[c.base][2] for c in cases)  # each case on its seed's base
-    assert AIR <= {c.form for c in cases if c.base == "s001_134"}  # the forms of a strip in air: on the air base only
-    assert not AIR & {c.form for c in cases if c.base != "s001_134"}
-    assert not WATER & {c.form for c in cases if c.base == "s001_134"}
-    earlier = earlier_variants(10, 21)
-    assert len(earlier) == 26 and earlier <= {c.variant for c in cases}  # every earlier variant used again
-    assert "stop_trigger" not in earlier
-    assert len([c for c in cases if c.variant == "stop_trigger"]) >= 4
-    assert len([c for c in cases if c.variant == "stop_trigger" and c.truth == "none"]) == 2
+    check_bases_and_variants(cases, 21, (133, 134, 135), AIR, WATER, "stop_trigger")
     assert {c.truth for c in cases if c.variant == "stop_trigger"} >= {"none", "unexplained"}
-    force = {c.form for c in cases if c.truth == "clamp_relaxation"}
-    assert not force & {c.form for c in cases if c.variant == "no_loadcell"}  # the clamp forms keep the load cell
     mains = {c.form for c in cases if c.truth == "mains_pickup"}
     averaging = ("coherent_sines", "decimated3", "resampled", "fir_decimated", "swinging_door", "cycle_averaged",
                  "scan_hold", "fixed_decimals", "log_steps", "rate07", "host_timed")

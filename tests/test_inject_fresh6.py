@@ -123,6 +123,28 @@ def check_new_strip_and_variant(set_no: int, preset: str, length_m: float, base:
     assert all(getattr(importlib.import_module(f"inject_fresh{k}"), f"v_{variant}", None) is None for k in range(2, set_no))
 
 
+def check_bases_and_variants(cases: list, set_no: int, seeds: tuple[int, int, int], air: set, water: set,
+                             variant: str) -> None:
+    """A set's cases on its three bases (the paper strip, the seed-001 strip in air, its own strip: ``seeds`` in that
+    order), each on its seed's; the in-air forms (``air``) on the seed-001 base only, the bath's (``water``) never
+    there; every earlier set's data shape (fresh10 on) used again, ``variant`` new on four cases or more, two of them
+    clean; the clamp forms never without the load cell."""
+    paper, s001, own = seeds
+    assert {c.base for c in cases} == {f"paper_{paper}", f"s001_{s001}", next(c.base for c in cases if c.seed == own)}
+    assert inject.BASES[f"s001_{s001}"][1] == "seed001" and inject.BASES[f"paper_{paper}"] == ("paper-sweep", "paper", paper)
+    assert all(c.seed == inject.BASES[c.base][2] for c in cases)
+    assert air <= {c.form for c in cases if c.base == f"s001_{s001}"}
+    assert not air & {c.form for c in cases if c.base != f"s001_{s001}"}
+    assert not water & {c.form for c in cases if c.base == f"s001_{s001}"}
+    earlier = earlier_variants(10, set_no)
+    assert len(earlier) == set_no + 5 and earlier <= {c.variant for c in cases}
+    assert variant not in earlier
+    assert len([c for c in cases if c.variant == variant]) >= 4
+    assert len([c for c in cases if c.variant == variant and c.truth == "none"]) == 2
+    force = {c.form for c in cases if c.truth == "clamp_relaxation"}
+    assert not force & {c.form for c in cases if c.variant == "no_loadcell"}
+
+
 def check_case_list(cases_of, forms: dict, seeds: set, variant: str) -> list:
     """A set of 34 cases with distinct names: every form once (outside structures twice), six clean, on its seeds,
     bases and variants registered, its new variant used, ``cases_of("none")`` the clean ones. Returns the cases."""
