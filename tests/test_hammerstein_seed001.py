@@ -204,6 +204,23 @@ def test_fit_batch_on_the_cluster_loses_no_session_when_a_worker_dies(cluster, s
     assert main(["fit", paths[0], str(tmp_path / "missing.h5"), "--scheduler", lc.scheduler_address]) == 2
 
 
+def test_a_multisines_own_lines_are_not_read_as_mains_pickup(seed001_session):
+    """Seed 001's multisine excites 0.2-60 Hz, mains lines included: in its records the diagnosis reads no line in the
+    band or where the strip's third-order products of it fall (it named `mains_pickup` at confidence 1 on this clean
+    session when it did), and still reads the lines above; the other records keep every line."""
+    from labrig.diagnose.features import LINE_HZ, extract
+
+    sd = load_session(seed001_session)
+    multi = {r.name: float(r.meta["f_max_Hz"]) for r in sd.all_records() if r.kind == "multisine"}
+    lines = {lf.name: {f for _, f in lf.amp} for lf in extract(sd).lines}
+    assert multi and set(multi) <= set(lines)
+    for name, got in lines.items():
+        if name in multi:
+            assert got and all(f > 3 * multi[name] + 2 for f in got), (name, sorted(got))
+        else:
+            assert {50.0, 60.0} <= got, name
+
+
 def test_diagnose_batch_on_the_cluster_gives_one_answer_per_session(cluster, seed001_session, tmp_path, capsys):
     """A file that is not a session is that session's error line (exit 2); the other is diagnosed and stored."""
     lc, _ = cluster

@@ -194,6 +194,18 @@ def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
     return float(coef[0]), float(np.mean(f)), sigma_w * math.sqrt(12.0 / f.size) / dur
 
 
+def _driven(r: TimeRecord, f: float) -> bool:
+    """Whether the record's own drive puts a line at ``f`` (within 2 Hz, where it folds at the record's rate), which
+    would read as pickup: a sine's harmonics to ``DRIVE_ORDERS``; a multisine's band to three times its top (its
+    lines and the third-order products a strip's nonlinearity makes of them: seed 001's 0.2-60 Hz multisine carries
+    60 Hz itself)."""
+    f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
+    if f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0):
+        return True
+    f_max = float(r.meta.get("f_max_Hz", 0.0) or 0.0)
+    return bool(f_max) and float(r.meta.get("f_min_Hz", 0.0) or 0.0) - 2.0 <= f <= 3.0 * f_max + 2.0
+
+
 def _lines(t: np.ndarray, x: np.ndarray, fs: float, freqs) -> dict[float, tuple[float, float]]:
     """Per line frequency: (amplitude there, median amplitude of the neighbouring bins), from one amplitude-calibrated
     Hann spectrum of the record; (0, inf) for a line the record cannot resolve (within 1.1x of Nyquist)."""
@@ -272,8 +284,7 @@ def extract(sd: SessionData) -> Features:
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)),
                                            r.v.copy(), r.fs, q, known))
         amp, floor = {}, {}
-        f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
-        freqs = [f for f in LINE_HZ if not (f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0))]
+        freqs = [f for f in LINE_HZ if not _driven(r, f)]
         # the drive's monitor too: a line the strip never saw, picked up on the recorded voltage, is mains pickup
         # as surely as one on the sensors (and a model driven by that record would predict it in the current)
         chans = tuple(zip(LINE_CHANNELS, (r.d, r.i, r.v)))
