@@ -10,7 +10,7 @@ import pytest
 from scipy.signal import lfilter
 
 from drivers.daq import Daq
-from drivers.errors import BufferOverflow, Disconnected, InstrumentErrorReply, InstrumentTimeout, ReplayMismatch
+from drivers.errors import BufferOverflow, Disconnected, InstrumentError, InstrumentErrorReply, InstrumentTimeout, ReplayMismatch
 from drivers.transcript import Transcript
 from labrig.clock import ScaledClock
 from mock_devices.daq_grpc import SimDaq, StandInBench
@@ -278,7 +278,6 @@ def test_an_emergency_stop_from_another_thread_stops_a_record_cleanly() -> None:
     """The force logger makes the rig safe from its own thread while the run's thread may be setting up or reading
     a record. Each record then completes or stops with an instrument error (never a half-released task); every
     0 V write succeeds and is read back, so the driver never gives the drive up to the card's watchdog."""
-    from drivers.errors import InstrumentError
     from labrig.simulate import simulated_rig
 
     with simulated_rig() as (rig, sims):

@@ -208,7 +208,7 @@ def test_a_multisines_own_lines_are_not_read_as_mains_pickup(seed001_session):
     """Seed 001's multisine excites 0.2-60 Hz, mains lines included: in its records the diagnosis reads no line in the
     band or where the strip's third-order products of it fall (it named `mains_pickup` at confidence 1 on this clean
     session when it did), and still reads the lines above; the other records keep every line."""
-    from labrig.diagnose.features import LINE_HZ, extract
+    from labrig.diagnose.features import extract
 
     sd = load_session(seed001_session)
     multi = {r.name: float(r.meta["f_max_Hz"]) for r in sd.all_records() if r.kind == "multisine"}
