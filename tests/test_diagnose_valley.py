@@ -44,7 +44,8 @@ def test_a_strip_off_along_its_valley_is_the_baselines_own_error_not_structure(c
     out = engine.diagnose(sd, off, fit.staged_valley)
     b = out["baseline"]
     assert "frf_d" in b["missed"]  # the shift shows
-    assert out["verdict"] == "none", (out["verdict"], out["cause"])
+    assert out["verdict"] == "none", (out["verdict"], out["cause"], out["residual"]["where"][:2],
+                                      {k: v / b["accuracy"][k] for k, v in b["refitted"]["blocks"].items()})
     # back towards the truth: the prior holds it near the stage's value as far as the mechanics can take the rest (how
     # far depends on the sweep's noise: -0.49 standard errors on one suite run, beyond -0.5 on the others)
     assert -SHIFT - 0.5 < b["refitted"]["params"]["electrical_valley_sd"] < -0.25

@@ -36,6 +36,7 @@ from labrig.physics import transfer
 from labrig.physics.impedance import impedance
 
 NUISANCE_BLOCKS = ("frf_d", "harm_d", "frf_i", "eis")  # what the mechanics (the first two) and the valley (all) change
+STEP_BLOCKS = ("step_d", "step_i")  # and the step records, where a refit is asked to keep them (``refit(steps=True)``)
 LOG_BOUND_GLOBAL = 1.5  # alpha and gamma within a factor e^1.5 of the fitted values
 LOG_BOUND_KT = 0.7
 VALLEY_BOUND = 3.0  # the electrical values within this many of R's standard errors along the valley
@@ -99,17 +100,19 @@ def _predict(ext: Extension | None, theta: np.ndarray, ctx: Context) -> Predicti
     return baseline(ctx) if ext is None else ext.apply(theta, ctx)
 
 
-def _sine_residual(ext, theta, ctx, la, lg, lkt, blocks_fn, vs: float = 0.0, valley: dict | None = None) -> np.ndarray:
-    c = with_mechanics(ctx, la, lg, lkt, steps=False, valley_sd=vs, valley=valley)
+def _residual(ext, theta, ctx, la, lg, lkt, blocks_fn, vs: float = 0.0, valley: dict | None = None,
+              steps: bool = False) -> np.ndarray:
+    c = with_mechanics(ctx, la, lg, lkt, steps=steps, valley_sd=vs, valley=valley)
     bl = blocks_fn(_predict(ext, theta, c), c)
-    return np.concatenate([bl[k][0] for k in NUISANCE_BLOCKS if k in bl])
+    return np.concatenate([bl[k][0] for k in NUISANCE_BLOCKS + (STEP_BLOCKS if steps else ()) if k in bl])
 
 
 def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn, starts: list[np.ndarray],
-          valley: dict | None = None) -> Refit:
+          valley: dict | None = None, steps: bool = False) -> Refit:
     """Fit the extension (``None``: the baseline alone) with the mechanics free on the fitted half and the
     electrical values free along ``valley`` (``Seed000Fit.staged_valley``; none: held), then the held-out half's
-    K_t bar; both contexts rebuilt with the result (steps included)."""
+    K_t bar; both contexts rebuilt with the result (steps included). With ``steps`` the fitted half's step records
+    join the sines in the fit (twice the cost): their edges tell R, and so the valley, better than the spectra do."""
     p_fit = sorted({s.pressure_kPa for s in ctx_fit.sines if s.pressure_kPa is not None})
     p_held = sorted({s.pressure_kPa for s in ctx_held.sines if s.pressure_kPa is not None} - set(p_fit))
     k = 0 if ext is None else len(ext.params)
@@ -119,8 +122,8 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
 
     def res(x: np.ndarray) -> np.ndarray:
         vs = x[k + 2 : k + 2 + nv]  # the electrical stage's own estimate, one standard error a unit: a prior residual
-        fit = _sine_residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 2 + nv :])), blocks_fn,
-                             float(vs[0]) if nv else 0.0, valley)
+        fit = _residual(ext, x[:k], ctx_fit, x[k], x[k + 1], dict(zip(p_fit, x[k + 2 + nv :])), blocks_fn,
+                        float(vs[0]) if nv else 0.0, valley, steps)
         return np.r_[fit, vs]
 
     best, cost = None, np.inf
@@ -138,7 +141,7 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
     lkt = dict(zip(p_fit, map(float, best[k + 2 + nv :])))
     if p_held:
         def res_h(x: np.ndarray) -> np.ndarray:
-            return _sine_residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn, vs, valley)
+            return _residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn, vs, valley)
 
         rh = least_squares(res_h, np.zeros(len(p_held)), bounds=(-LOG_BOUND_KT, LOG_BOUND_KT), x_scale="jac", max_nfev=40)
         lkt.update(zip(p_held, map(float, rh.x)))
