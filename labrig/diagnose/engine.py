@@ -422,7 +422,8 @@ class _Scorer:
         mechanics can bend the FRF back into place while the step's edges go wrong (a clean sweep staged 2.5 standard
         errors off along the valley, refitted back only 1.1 of them: the fall's first quarter second 1.56 x its
         accuracy); the steps tell where along the valley the strip sits."""
-        r = refit(None, self.ctx_fit, self.ctx_held, blocks, [], self.valley, steps=True)
+        self.reference()
+        r = refit(None, self.ctx_fit, self.ctx_held, blocks, [], self.valley, steps=True, near=self.reference_fit)
         return r, blocks(baseline(r.ctx_held), r.ctx_held)
 
     def score(self, name: str) -> Candidate:
@@ -742,9 +743,11 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         if heldout_error(block_rms(ref_held), None, accuracy) < heldout_error(held_rms, None, accuracy):
             verdict_held, verdict_ctx, refitted = ref_held, ref.ctx_held, ref.params()
     structure, step_window = _structure(verdict_held, verdict_ctx, ctx_fit, same, accuracy)
-    if structure and ref is not None and not named and rival is None and not clock["flagged"] and not monitor["flagged"]:
+    if structure and ref is not None and not named and rival is None and not recording["flagged"] and \
+            not _recording_decides(clock, monitor, recording, named):
         # structure on a baseline refitted to the sines alone: refitted to the steps too, it may be the baseline's own
-        # error after all (where that predicts the held-out half better still)
+        # error after all (where that predicts the held-out half better still); not where the verdict is unexplained
+        # whatever the baseline (a rival drive path, the recording's own artefacts)
         alt, alt_held = scorer.reference_with_steps()
         if abs(alt.valley_sd) < 0.99 * VALLEY_BOUND and \
                 heldout_error(block_rms(alt_held), None, accuracy) < heldout_error(block_rms(verdict_held), None, accuracy):

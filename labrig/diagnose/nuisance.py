@@ -108,11 +108,13 @@ def _residual(ext, theta, ctx, la, lg, lkt, blocks_fn, vs: float = 0.0, valley: 
 
 
 def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn, starts: list[np.ndarray],
-          valley: dict | None = None, steps: bool = False) -> Refit:
+          valley: dict | None = None, steps: bool = False, near: Refit | None = None) -> Refit:
     """Fit the extension (``None``: the baseline alone) with the mechanics free on the fitted half and the
     electrical values free along ``valley`` (``Seed000Fit.staged_valley``; none: held), then the held-out half's
     K_t bar; both contexts rebuilt with the result (steps included). With ``steps`` the fitted half's step records
-    join the sines in the fit (twice the cost): their edges tell R, and so the valley, better than the spectra do."""
+    join the sines in the fit: their edges tell R, and so the valley, better than the spectra do. ``near``: a refit
+    of the same parameters to start from (the sine-only one: the steps move it little, and each evaluation costs
+    twice as much with them)."""
     p_fit = sorted({s.pressure_kPa for s in ctx_fit.sines if s.pressure_kPa is not None})
     p_held = sorted({s.pressure_kPa for s in ctx_held.sines if s.pressure_kPa is not None} - set(p_fit))
     k = 0 if ext is None else len(ext.params)
@@ -128,7 +130,9 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
 
     best, cost = None, np.inf
     for th0 in starts or [np.zeros(0)]:
-        x0 = np.clip(np.r_[th0, 0.0, 0.0, [0.0] * nv, [0.0] * len(p_fit)], lo, hi)
+        x0 = np.r_[th0, 0.0, 0.0, [0.0] * nv, [0.0] * len(p_fit)] if near is None else \
+            np.r_[th0, near.log_alpha, near.log_gamma, [near.valley_sd] * nv, [near.log_kt.get(p, 0.0) for p in p_fit]]
+        x0 = np.clip(x0, lo, hi)
         try:
             r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50)
         except (ValueError, FloatingPointError, OverflowError):
