@@ -73,3 +73,27 @@ def test_a_degenerate_covariance_gives_no_valley():
     loose[2, 2] = 1.0
     assert valley(SimpleNamespace(covar=loose, var_names=names), "log_R") == {}
     assert valley(SimpleNamespace(covar=None, var_names=names), "log_R") == {}
+
+
+def test_the_steps_tell_the_verdicts_refit_where_along_the_valley_the_strip_sits(clean):
+    """Refitted to the sines alone, the staged-off strip comes back part of the way (the mechanics bend the FRF into
+    place meanwhile); with the step records in the refit too, their edges take it further back towards the truth
+    (-SHIFT), and its held-out step blocks are no worse (engine._Scorer.reference_with_steps)."""
+    from labrig.diagnose.catalogue import baseline
+    from labrig.diagnose.features import extract
+
+    sd, fit = clean
+    off = {p: shifted(sp, p, fit.staged_valley, SHIFT) for p, sp in engine.baseline_specimens(fit).items()}
+    feats = extract(sd)
+    fit_set, held_set = engine.split(feats)
+    cf, ch = engine.build_context(feats, off, fit_set), engine.build_context(feats, off, held_set)
+    c0, n = engine.chi2(engine.blocks(baseline(cf), cf))
+    scorer = engine._Scorer(cf, ch, c0, n, engine.blocks(baseline(ch), ch), True, fit.staged_valley)
+    scorer.reference()
+    sines_only, sines_held = scorer.reference_fit, engine.block_rms(scorer.reference_held)
+    with_steps, steps_held = scorer.reference_with_steps()
+    steps_held = engine.block_rms(steps_held)
+    assert -SHIFT - 0.5 < with_steps.valley_sd < sines_only.valley_sd < 0, (with_steps.valley_sd, sines_only.valley_sd)
+    assert abs(with_steps.valley_sd + SHIFT) < abs(sines_only.valley_sd + SHIFT)
+    for k in ("step_d", "step_i"):
+        assert steps_held[k] <= 1.05 * sines_held[k], (k, steps_held[k], sines_held[k])
