@@ -333,7 +333,7 @@ def test_fixed_decimals_imports(tmp_path):
 
 
 def test_deterministic_per_seed():
-    """Every form gives the same session twice from the same seed, and another from another."""
+    """A third of the forms (``sampled``) give the same session twice from the same seed, and another from another."""
     t2.check_deterministic(FORMS)
 
 
