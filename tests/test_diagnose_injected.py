@@ -150,7 +150,7 @@ def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(
     for r in s.series():
         r.cols["disp_m"] = _wrapped(r.cols["disp_m"], 1e-7)
     out = imported_and_diagnosed(s, tmp_path / "wrapped", capsys)
-    assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, [])
+    assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, []), out["recording"]["wrapped"]
     wrapped = out["recording"]["wrapped"]
     assert wrapped["flagged"] and wrapped["channels"] == ["displacement"] and len(wrapped["records"]["displacement"]) == 2
     assert out["residual"]["where"][0]["block"] == "recording" and "span or more in one sample" in out["residual"]["where"][0]["detail"]
