@@ -53,7 +53,7 @@ def _edges(r: inject.Rec) -> tuple[int, int]:
     return on, on + int(np.argmax(v[on:] < 0.5)) - 1
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.sampled(FORMS), ids=[n for _, n, _ in t2.sampled(FORMS)])
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""

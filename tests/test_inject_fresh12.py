@@ -62,7 +62,7 @@ def _sine_session(f: float, amp: float = 0.5, dur: float = 40.0, fs: float = 100
     return inject.Session(BASE.specimen, [rec], "paper", 0.0, float(t[-1]), np.random.default_rng(3))
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.sampled(FORMS), ids=[n for _, n, _ in t2.sampled(FORMS)])
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""

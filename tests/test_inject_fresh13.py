@@ -85,7 +85,7 @@ def _phase(r: inject.Rec, d: np.ndarray, f: float) -> complex:
     return complex(np.sum(d[half] * np.exp(-2j * np.pi * f * t[half])))
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.sampled(COLUMN_FORMS), ids=[n for _, n, _ in t2.sampled(COLUMN_FORMS)])
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(COLUMN_FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""

@@ -57,7 +57,7 @@ WATER = {"squeeze_swelling", "grounded_probe", "contact_aging", "level_refractio
          "thermal_mismatch"}  # in a bath
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.sampled(FORMS), ids=[n for _, n, _ in t2.sampled(FORMS)])
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""

@@ -75,6 +75,11 @@ def sampled(forms: list, every: bool = False) -> list:
     return list(forms) if every or os.environ.get("LABRIG_INJECT_ALL_FORMS") else list(forms)[::3]
 
 
+def form_params(forms: list, every: bool = False) -> list:
+    """The ``sampled`` forms as pytest parameters (truth, name, fn), each named by its form."""
+    return [pytest.param(*f, id=f[1]) for f in sampled(forms, every)]
+
+
 def check_deterministic(forms: list, every: bool = False) -> None:
     """Every form of ``forms`` ((truth, name, fn) each; a third of them unless ``every``: ``sampled``) gives the same
     session twice from the same seed, and another from another."""
@@ -108,7 +113,7 @@ def check_form_changes(name: str, fn, changes: dict[str, set[str]], faint: dict[
         assert np.sqrt(np.mean((y - x) ** 2)) > 5e-4 * np.sqrt(np.mean(x**2)), (name, k)
 
 
-@pytest.mark.parametrize("truth,name,fn", sampled(FORMS), ids=[n for _, n, _ in sampled(FORMS)])
+@pytest.mark.parametrize("truth,name,fn", form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     check_form_changes(name, fn, CHANGES)
 

@@ -37,7 +37,7 @@ CHANGES = {  # the columns each form must change (every other column, t_s includ
 FORMS = [(t, n, fn) for t, forms in f7.FRESH7_FORMS.items() for n, fn in forms.items()]
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.sampled(FORMS), ids=[n for _, n, _ in t2.sampled(FORMS)])
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly) with this set's columns."""
