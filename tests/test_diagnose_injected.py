@@ -143,12 +143,14 @@ def test_a_clipped_drive_monitor_names_no_cause_and_says_where(exported, tmp_pat
 
 
 def test_a_laser_read_through_a_wrapping_register_names_no_cause_and_says_where(exported, tmp_path, capsys):
-    """clipping.wrapping end to end: the laser read over a signed int16 register of 0.1 um, its 8.8 mm steps carried
-    round at +-3.28 mm. Without the test a wrapped step reads as a compressed large deflection or a relaxation."""
+    """clipping.wrapping end to end: the laser read over a signed int16 register of 0.05 um, its 8.8 mm steps carried
+    round at +-1.64 mm (crossing 8.19 mm on the slow approach to the plateau). Without the test a wrapped step reads as
+    a compressed large deflection or a relaxation. (At 0.1 um, +-3.28 mm, each step crosses only within its fast rise
+    and fall, next to the drive's edges where a jump is the step's own: one suite sweep in four had a record so read.)"""
     s = inject.read_export(exported / "clean", "paper")
     inject.v_two_pressures(s)
     for r in s.series():
-        r.cols["disp_m"] = _wrapped(r.cols["disp_m"], 1e-7)
+        r.cols["disp_m"] = _wrapped(r.cols["disp_m"], 5e-8)
     out = imported_and_diagnosed(s, tmp_path / "wrapped", capsys)
     assert (out["verdict"], out["cause"], out["effects"]) == ("unexplained", None, []), out["recording"]["wrapped"]
     wrapped = out["recording"]["wrapped"]
