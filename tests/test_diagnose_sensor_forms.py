@@ -87,3 +87,27 @@ def test_the_nearest_point_reads_the_tip_one_way_and_the_edge_the_other():
     assert np.all(lead.real > 0.95 * np.abs(lead))  # + |d|: the crests the taller, towards the sensor
     np.testing.assert_allclose(away.hd[slow, 0], -towards.hd[slow, 0], rtol=1e-6)
     np.testing.assert_allclose(away.Hd, towards.Hd, rtol=1e-9)  # the same gain on either side
+
+
+def test_the_walking_station_reads_each_record_at_its_moments_station():
+    """No walk: the spot form at x0 (at the tip, the baseline). A walk: each record read where the spot stood when it
+    ran, exactly as the spot form there (the mode shapes at the station, not a gain): the session's first record at
+    x0, its last at x0 - walk; inboard the low frequencies lose about (x/L)^2 and 20 Hz, above the first resonance,
+    more."""
+    from labrig.diagnose.station import stations, walking
+
+    ctx = _context()
+    np.testing.assert_allclose(walking(np.array([1.0, 0.0, 0.5]), ctx).Hd, ctx.Hd, rtol=1e-10)
+    still = walking(np.array([0.95, 0.0, 0.5]), ctx).Hd
+    np.testing.assert_allclose(still, sensor_read(ctx, sensor_x=0.95 * ctx.length).Hd, rtol=1e-10)
+    th = np.array([0.98, 0.04, 0.3])
+    p = walking(th, ctx)
+    xs = stations(th, ctx, np.array([s.t_start for s in ctx.sines]))
+    assert xs[0] == pytest.approx(0.98 * ctx.length) and xs[-1] < xs[0]
+    u_last = ctx.feats.time_share(ctx.sines[-1].t_start)
+    assert xs[-1] == pytest.approx(ctx.length * (0.98 - 0.04 * -np.expm1(-u_last / 0.3) / -np.expm1(-1 / 0.3)))
+    for k in (0, 4, len(ctx.sines) - 1):
+        one = sensor_read(ctx, sensor_x=float(xs[k])).Hd[k]
+        assert p.Hd[k] == pytest.approx(one, rel=1e-10)
+    low, high = (abs(still[k] / ctx.Hd[k]) for k in (0, 2))  # 0.5 and 20 Hz at the first pressure
+    assert low == pytest.approx(0.95**2, abs=0.02) and high < low - 0.05

@@ -141,3 +141,20 @@ def test_a_flag_at_the_tip_reads_the_strip_and_its_tangent(lever_over_L):
     flag = transfer.frf(f, SP.with_(sensor_lever=e))
     np.testing.assert_allclose(flag, tip + e * slope, rtol=2e-4)
     assert (abs(flag[0]) > abs(tip[0])) == (e > 0)
+
+
+def test_the_modal_responses_read_at_any_station_are_the_frf_there():
+    """transfer.modal_responses times transfer.shapes_at(x) summed over the modes is the FRF of the strip read at x,
+    to rounding, at every station and frequency: one modal set serves a spot that moves."""
+    import numpy as np
+
+    from labrig.physics import presets, transfer
+
+    sp = presets.get("paper").specimen(1837.0)
+    f = np.array([0.1, 1.0, 8.0, 20.0, 60.0])
+    resp = transfer.modal_responses(2j * np.pi * f, sp)
+    for share in (0.5, 0.9, 0.97, 1.0):
+        x = share * sp.geometry.length
+        read = np.sum(resp * transfer.shapes_at(np.full(f.size, x), sp), axis=1)
+        np.testing.assert_allclose(read, transfer.frf(f, sp.with_(sensor_x=x)), rtol=1e-10)
+    np.testing.assert_allclose(transfer.displacement_tf(2j * np.pi * f, sp), transfer.frf(f, sp), rtol=1e-12)

@@ -364,6 +364,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([1.0, 0.2, 1.0, 0.1, 0.15, 0.3]), np.array([1.0, 0.2, 1.0, 0.1, 0.7, 0.3])]  # early, late
     if ext.form == "per_setting":
         starts += [np.array([1.0, 0.2, 1.0, 0.1, -0.5, 200.0])]  # a loss building through each block
+    if ext.form == "walking":
+        starts += [np.array([0.97, -0.02, 0.5])]  # walking towards the tip
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)

@@ -11,7 +11,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; play operator in the displacement path (the sensor side); Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
-| sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor |
+| sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side) |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge; from an onset inside the session; set anew at each clamp setting |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
@@ -28,7 +28,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read)
-from labrig.diagnose import slow_forms as slow
+from labrig.diagnose import slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
 from labrig.physics import timeresp
@@ -484,6 +484,10 @@ FAMILIES["sensor_offset"] += [
           "a footprint from the tip to an edge q L inboard, read at its point nearest the sensor: the tip bending towards "
           "it, the edge bending away (q's sign: the side it faces; alpha, gamma, K_t bar refitted)", refit_mechanics=True,
           needs=frozenset({"harm_d"})),  # a gain of each half its own: a 2nd harmonic of (1 - k) 4/(3 pi (1 + k)), 5 % at k 0.8
+    _form("sensor_offset", "walking", ("x_over_L", "walk_over_L", "tau_spans"), (0.97, 0.02, 0.5), (0.3, -0.3, 0.03), (1.0, 0.3, 5.0),
+          station.walking, "the spot walking along the strip with session time, x_m = L (x0 - walk (1 - e^-u/tau)) (a laser "
+          "head warming up, a stand settling): read through the mode shapes there (alpha, gamma, K_t bar refitted)",
+          refit_mechanics=True),
 ]
 FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),

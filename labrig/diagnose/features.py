@@ -75,6 +75,9 @@ class StepFeature:
     # per block: whether a sample of it was read (None: all were); a block of filled samples only (a gap in the time
     # stamps, session_data.regular_grid) is not compared
     known: np.ndarray | None = None
+    # per drive edge read at the first sample after a gap of the time stamps (the drive held across it): (the gap's
+    # first sample, the edge's sample) at the record's own rate; the edge fell somewhere between
+    edge_gaps: tuple = ()
 
     def decimate(self, x: np.ndarray) -> np.ndarray:
         n = self.t.size * self.q
@@ -282,7 +285,7 @@ def extract(sd: SessionData) -> Features:
             ni = float(np.std(r.i[pre]) / np.sqrt(q)) if pre.sum() > 8 else 1e-6
             known = None if not r.filled.any() else ~r.filled[: t.size * q].reshape(-1, q).all(axis=1)
             feats.steps.append(StepFeature(r.name, p, r.t_start, t, v, d, i, max(nd, 1e-7), max(ni, 1e-8), float(r.meta.get("amplitude_V", 1.0)),
-                                           r.v.copy(), r.fs, q, known))
+                                           r.v.copy(), r.fs, q, known, edge_gaps(r.v, r.filled)))
         amp, floor = {}, {}
         freqs = [f for f in LINE_HZ if not _driven(r, f)]
         # the drive's monitor too: a line the strip never saw, picked up on the recorded voltage, is mains pickup
@@ -314,12 +317,44 @@ def step_grid(sp: Specimen, n: int, fs: float):
     return timeresp.transfer_grid([lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)], n, fs)
 
 
+def edge_gaps(v: np.ndarray, filled: np.ndarray) -> tuple:
+    """Per edge of a step's drive read just after a gap of the time stamps (``session_data.held`` holds the drive
+    across it, so the edge shows at the first sample read after): (the gap's first sample, the edge's sample). A
+    buffer that lost the packet holding the edge leaves its instant unknown within the gap."""
+    if v.size < 2 or filled.size != v.size or not filled.any():
+        return ()
+    out = []
+    for k in np.flatnonzero(np.abs(np.diff(v)) > 0.5 * np.ptp(v)) + 1:
+        if filled[k - 1]:
+            a = k - 1
+            while a > 0 and filled[a - 1]:
+                a -= 1
+            out.append((int(a), int(k)))
+    return tuple(out)
+
+
+def gap_timing_sigma(sp: Specimen, st: StepFeature) -> tuple[np.ndarray, np.ndarray]:
+    """How much the step prediction (displacement, current; block averaged) depends on where within a gap of the time
+    stamps a drive edge fell (``StepFeature.edge_gaps``): the prediction with the edge at the gap's start minus the
+    prediction with it where it was read, at the gap's end. Zero for a record without such a gap."""
+    if not st.edge_gaps or st.fs_full <= 0:
+        return np.zeros(st.t.size), np.zeros(st.t.size)
+    early = st.v_full.copy()
+    for a, k in st.edge_gaps:
+        early[a:k] = st.v_full[k]
+    tfs = [lambda s: transfer.displacement_tf(s, sp), lambda s: transfer.admittance_tf(s, sp)]
+    d, i = timeresp.simulate_many(tfs, st.v_full, st.fs_full)
+    d2, i2 = timeresp.simulate_many(tfs, early, st.fs_full)
+    return np.abs(st.decimate(d2 - d)), np.abs(st.decimate(i2 - i))
+
+
 def step_timing_sigma(sp: Specimen, st: StepFeature) -> tuple[np.ndarray, np.ndarray]:
     """How much the step prediction (displacement, current; at the compared rate) depends on where within its
     sample the drive's edge fell: the prediction half a sample later, minus the prediction, block
     averaged. Small away from the edges; at the edges the current's spike of an RC strip lives within one sample, and
     a record sampled slowly (an averaging ADC's block means, an import at half the rate) cannot place it better.
-    Added in quadrature to the step's noise: the sampling's own uncertainty, not a threshold."""
+    Added in quadrature to the step's noise: the sampling's own uncertainty, not a threshold; with it, in quadrature,
+    an edge's uncertainty within a gap of the stamps (``gap_timing_sigma``)."""
     if st.fs_full <= 0 or st.v_full.size == 0:
         return np.zeros(st.t.size), np.zeros(st.t.size)
     half = 0.5 / st.fs_full
@@ -328,7 +363,8 @@ def step_timing_sigma(sp: Specimen, st: StepFeature) -> tuple[np.ndarray, np.nda
     # shifted in the frequency domain, as the prediction itself is made: the band-limited response to an edge
     # within a sample differs from the block means of a faster record in the spike and in its sinc tails
     d, i, d2, i2 = timeresp.simulate_many([*tfs, *shifted], st.v_full, st.fs_full)
-    return np.abs(st.decimate(d2 - d)), np.abs(st.decimate(i2 - i))
+    gd, gi = gap_timing_sigma(sp, st)  # an edge lost in a gap of the stamps: its instant unknown within the gap
+    return np.hypot(st.decimate(d2 - d), gd), np.hypot(st.decimate(i2 - i), gi)
 
 
 def predict_sines(sp: Specimen, sines: list[SineFeature]) -> tuple[np.ndarray, np.ndarray]:

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, baseline
+from labrig.diagnose.features import gap_timing_sigma, specimen_for
 
 WINDOW_S = 0.25
 # 1.25 x the largest of the tuning set's ten clean sessions (0.188 % of the step's peak; the clean sessions of
@@ -53,6 +54,8 @@ def step_windows(contexts: list[Context]) -> dict[str, Any] | None:
                 r = np.asarray(d) - st.d
                 if st.known is not None:
                     r = np.where(st.known, r, np.nan)
+                if st.edge_gaps:  # where an edge lost in a gap of the stamps moves the prediction more than the level read
+                    r = np.where(gap_timing_sigma(specimen_for(ctx.specimens, st.pressure_kPa), st)[0] > STEP_WINDOW_ACCURACY * peak, np.nan, r)
                 level, at = worst_window(r, st.t)
                 per.append((level / peak, at, st.pressure_kPa))
     if len(per) < 2:

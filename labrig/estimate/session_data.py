@@ -237,9 +237,10 @@ def filled_mask(t: np.ndarray, grid: np.ndarray) -> np.ndarray:
 def held(t: np.ndarray, v: np.ndarray, grid: np.ndarray) -> np.ndarray:
     """``v`` read at the grid's points as its last value before each (a zero-order hold): a step's drive changes at
     an instant, so across a gap it holds until the next reading shows the change; a line drawn across the gap would
-    be a ramp the strip never saw, and its current (C dv/dt over the gap) a current never drawn. A grid point within a
-    billionth of a spacing of a stamp reads that stamp (the grid is the stamps' own, up to rounding)."""
-    last = np.searchsorted(t, grid + 1e-9 * _spacing(grid), side="right") - 1
+    be a ramp the strip never saw, and its current (C dv/dt over the gap) a current never drawn. A grid point within
+    half a spacing of a stamp reads that stamp, as ``filled_mask`` counts it read (the grid is the stamps' own up to
+    rounding, and the rounding of a median spacing grows along a long record: 7e-11 s at a minute's 60 000th sample)."""
+    last = np.searchsorted(t, grid + 0.5 * _spacing(grid), side="right") - 1
     return v[np.clip(last, 0, v.size - 1)]
 
 

@@ -33,6 +33,13 @@ from labrig.physics.params import AIR_25C, WATER_25C, Fluid, Geometry, Specimen
 from labrig.records import RecordKind
 
 REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not reported as told
+# the spectra's RMS, in units of their own noise, that joining the DAQ's current may leave (fit_electrical): clean
+# sessions 0.97-1.00 with it (1.0 by construction without); a current read 5-30 ms late 67-152, a drying 8-43
+CURRENT_AGREES = 1.5
+# the share by which the current's RMS must fall when the electrical values are freed to it, where it puts the spectra
+# beyond CURRENT_AGREES: a current read late or filtered 0.21-0.24, a faradaic branch 0.42-0.88, a drying 0.74-0.88
+# (set on the seen sets fresh19-22, docs/diagnosis.md)
+CURRENT_MOVES = 0.3
 MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
 # the staged valley's largest step (log10 values: decades; exponents: their own units) per standard error of R:
 # clean sessions give at most 0.02, drying strips 0.5-14 in the cached sets, beyond 100 where a CI run overflowed
@@ -147,12 +154,24 @@ def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> t
     spectra and the same pressures' DAQ current admittance together. The spectrum alone leaves the line and clamp
     resistances free to trade along a shallow valley (R 7 % high against R_c 5 % low in one clean session of ten,
     which then put the displacement FRF 1-3 % off near resonance); the current, 15x less noisy per point, pins it.
-    The current carries no displacement-path effect, so this stage stays a purely electrical baseline."""
-    res, sigma = fit_impedance(data, priors)
+    The current carries no displacement-path effect, so this stage stays a purely electrical baseline.
+
+    The current chooses along the spectra's valley; it does not overrule them. Where joining it puts the spectra
+    beyond ``CURRENT_AGREES`` x their own noise and yet brings the current itself little closer (its RMS down by less
+    than ``CURRENT_MOVES``), the current holds what no electrical values make (a current read late, or through a
+    filter of its own): the spectra's values are kept (the third value returned: False). A strip that changed between
+    the spectra and the sines (a drying) moves both, and the current, which the values then follow, is joined."""
+    alone, sigma = fit_impedance(data, priors)
     cur = [d for d in data if d.current_lines() is not None]
-    if cur:
-        res = Problem(priors, eis=data, cur=cur, sigma_eis=sigma).minimize(res.params)
-    return res, sigma
+    if not cur:
+        return alone, sigma, True
+    problem = Problem(priors, eis=data, cur=cur, sigma_eis=sigma)
+    res = problem.minimize(alone.params)
+    n = problem.offsets[len(data)]
+    rms = lambda r: float(np.sqrt(np.mean(r**2)))  # noqa: E731
+    if rms(res.residual[:n]) > CURRENT_AGREES and rms(res.residual[n:]) > (1 - CURRENT_MOVES) * rms(problem.residual(alone.params)[n:]):
+        return alone, sigma, False
+    return res, sigma, True
 
 
 def valley(res: lmfit.minimizer.MinimizerResult, name: str) -> dict[str, float]:
@@ -275,7 +294,10 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
     with_frf = [d for d in sd.pressures if (lines := d.frf_lines()) is not None and lines[0].size >= MIN_FRF_LINES]
     final = None
     if with_eis:
-        res, fit.eis_noise_rel = fit_electrical(with_eis, priors)
+        res, fit.eis_noise_rel, agrees = fit_electrical(with_eis, priors)
+        if not agrees:
+            fit.notes.append(f"the DAQ's current disagrees with the spectra (with it, the spectra beyond {CURRENT_AGREES:g} x their "
+                             "noise): the electrical values are the spectra's alone")
         final = res.params
         fit.staged_valley = valley(res, "log_R")
         fit.staged_specimens = _specimens(priors, final)

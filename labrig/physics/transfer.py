@@ -124,13 +124,35 @@ def modal_forces(s: np.ndarray, sp: Specimen, ms: ModalSet | None = None) -> np.
     return forces
 
 
-def displacement_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
-    """Eq. 38: H(s) = w(x_m, s)/V0(s) = sum_i phi_i(x_m) F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), m/V."""
+def modal_responses(s: np.ndarray, sp: Specimen) -> np.ndarray:
+    """Eq. 38's terms before the sensor's shape: F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), shape (len(s), modes)."""
     ms = modal_set(sp)
     s = np.atleast_1d(np.asarray(s, complex))
     sc = s[:, None]
     den = ms.modal_mass[None, :] * (sc * sc + 2 * ms.xi * ms.omega * sc + ms.omega**2)
-    return (modal_forces(s, sp, ms) / den) @ ms.phi_sensor
+    return modal_forces(s, sp, ms) / den
+
+
+def displacement_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
+    """Eq. 38: H(s) = w(x_m, s)/V0(s) = sum_i phi_i(x_m) F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), m/V."""
+    return modal_responses(s, sp) @ modal_set(sp).phi_sensor
+
+
+def shapes_at(x: np.ndarray, sp: Specimen) -> np.ndarray:
+    """The normalised mode shapes of ``sp`` (as ``_shapes``: int phi^2 dx = L) at stations x (m from the clamp), shape
+    (len(x), modes): with ``modal_responses``, the FRF read at any station is (R * shapes_at(x)).sum(1), without a
+    modal set per station."""
+    L = sp.geometry.length
+    bl = beam.beta_L_roots(float(sp.Kt_bar), int(sp.n_modes))
+    return beam.mode_shapes(np.atleast_1d(np.asarray(x, float)), L, bl, float(sp.Kt_bar)) / _shape_norm(float(sp.Kt_bar), int(sp.n_modes), L)
+
+
+@lru_cache(maxsize=256)
+def _shape_norm(Kt_bar: float, n_modes: int, length: float) -> np.ndarray:
+    bl = beam.beta_L_roots(Kt_bar, n_modes)
+    u, w = _LEGENDRE
+    raw = beam.mode_shapes(0.5 * length * (u + 1.0), length, bl, Kt_bar)
+    return np.sqrt((0.5 * length * w) @ raw**2 / length)
 
 
 def admittance_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
