@@ -75,8 +75,11 @@
 * Fresh22 held-out set (``--set fresh22``, bench/inject_fresh22.py ``fresh22_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 136-138, the paper
   strip 41 mm free, a new data shape (the manifest lists every time series, then every spectrum: two exports merged).
+* Fresh23 held-out set (``--set fresh23``, bench/inject_fresh23.py ``fresh23_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 139-141, the paper
+  strip 43 mm free, a new data shape (the load cell's adapter dropping out until the next re-clamping: no force column).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -173,7 +176,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh19": "fresh19 held-out set (diagnosed once unseen at 5ab0d14; seen since)",
           "fresh20": "fresh20 held-out set (diagnosed once unseen at b08be25; seen since)",
           "fresh21": "fresh21 held-out set (diagnosed once unseen at fdb2182; seen since)",
-          "fresh22": "fresh22 held-out set (unseen: no threshold saw it)"}
+          "fresh22": "fresh22 held-out set (diagnosed once unseen at 77a16f7; seen since)",
+          "fresh23": "fresh23 held-out set (unseen: no threshold saw it)"}
 
 
 def validation(a, name: str = "validation") -> list:
