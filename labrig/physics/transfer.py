@@ -124,9 +124,9 @@ def modal_forces(s: np.ndarray, sp: Specimen, ms: ModalSet | None = None) -> np.
     return forces
 
 
-def modal_responses(s: np.ndarray, sp: Specimen) -> np.ndarray:
+def modal_responses(s: np.ndarray, sp: Specimen, ms: ModalSet | None = None) -> np.ndarray:
     """Eq. 38's terms before the sensor's shape: F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), shape (len(s), modes)."""
-    ms = modal_set(sp)
+    ms = ms or modal_set(sp)
     s = np.atleast_1d(np.asarray(s, complex))
     sc = s[:, None]
     den = ms.modal_mass[None, :] * (sc * sc + 2 * ms.xi * ms.omega * sc + ms.omega**2)
@@ -135,7 +135,8 @@ def modal_responses(s: np.ndarray, sp: Specimen) -> np.ndarray:
 
 def displacement_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
     """Eq. 38: H(s) = w(x_m, s)/V0(s) = sum_i phi_i(x_m) F_i(s) / (M_i (s^2 + 2 xi_i w_i s + w_i^2)), m/V."""
-    return modal_responses(s, sp) @ modal_set(sp).phi_sensor
+    ms = modal_set(sp)  # once: its cache key is a Specimen built per call, a fit's inner loop makes 10^5 of them
+    return modal_responses(s, sp, ms) @ ms.phi_sensor
 
 
 def shapes_at(x: np.ndarray, sp: Specimen) -> np.ndarray:
