@@ -57,16 +57,22 @@ def damping_ratio(omega: np.ndarray, sp: Specimen) -> np.ndarray:
 
 
 @lru_cache(maxsize=1024)
+def _roots_and_norm(Kt_bar: float, n_modes: int, length: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(beta L roots, quadrature nodes, weights, the raw mode shapes there, each mode's norm: int phi^2 dx = L)."""
+    bl = beam.beta_L_roots(Kt_bar, n_modes)
+    u, w = _LEGENDRE
+    nodes, weights = 0.5 * length * (u + 1.0), 0.5 * length * w
+    phi = beam.mode_shapes(nodes, length, bl, Kt_bar)
+    return bl, nodes, weights, phi, np.sqrt(weights @ phi**2 / length)
+
+
+@lru_cache(maxsize=1024)
 def _shapes(Kt_bar: float, n_modes: int, length: float, x_sensor: float, lever: float = 0.0) -> tuple[np.ndarray, ...]:
     """Roots and mode shapes on the quadrature nodes: they depend on K_t bar and the geometry only. The sensor's
     shape is phi(x) + lever phi'(x): a rigid flag ``lever`` beyond the spot along the tangent (0: the strip)."""
     L = length
-    bl = beam.beta_L_roots(Kt_bar, n_modes)
-    u, w = _LEGENDRE
-    nodes, weights = 0.5 * L * (u + 1.0), 0.5 * L * w
-    phi = beam.mode_shapes(nodes, L, bl, Kt_bar)
+    bl, nodes, weights, phi, norm = _roots_and_norm(Kt_bar, n_modes, L)
     phi2 = beam.mode_shapes(nodes, L, bl, Kt_bar, 2)
-    norm = np.sqrt(weights @ phi**2 / L)  # int phi^2 dx = L
     phi_s = beam.mode_shapes(np.array([x_sensor]), L, bl, Kt_bar)[0] / norm
     if lever:
         phi_s = phi_s + lever * beam.mode_shapes(np.array([x_sensor]), L, bl, Kt_bar, 1)[0] / norm
@@ -144,16 +150,8 @@ def shapes_at(x: np.ndarray, sp: Specimen) -> np.ndarray:
     (len(x), modes): with ``modal_responses``, the FRF read at any station is (R * shapes_at(x)).sum(1), without a
     modal set per station."""
     L = sp.geometry.length
-    bl = beam.beta_L_roots(float(sp.Kt_bar), int(sp.n_modes))
-    return beam.mode_shapes(np.atleast_1d(np.asarray(x, float)), L, bl, float(sp.Kt_bar)) / _shape_norm(float(sp.Kt_bar), int(sp.n_modes), L)
-
-
-@lru_cache(maxsize=256)
-def _shape_norm(Kt_bar: float, n_modes: int, length: float) -> np.ndarray:
-    bl = beam.beta_L_roots(Kt_bar, n_modes)
-    u, w = _LEGENDRE
-    raw = beam.mode_shapes(0.5 * length * (u + 1.0), length, bl, Kt_bar)
-    return np.sqrt((0.5 * length * w) @ raw**2 / length)
+    bl, _, _, _, norm = _roots_and_norm(float(sp.Kt_bar), int(sp.n_modes), L)
+    return beam.mode_shapes(np.atleast_1d(np.asarray(x, float)), L, bl, float(sp.Kt_bar)) / norm
 
 
 def admittance_tf(s: np.ndarray, sp: Specimen) -> np.ndarray:
