@@ -132,6 +132,27 @@ def test_a_cause_of_the_current_needs_the_current_missed():
     assert _significant([Candidate("faradaic_current", {}, -500.0, 1.0, 0.1, 0.0, 0.1)], {"step_d"}) == []
 
 
+def test_a_drying_needs_the_conductance_to_move():
+    """A drying takes the ions' water: dehydration is named only where the base misses the current's linear response
+    or the spectra, with the held-out levels (``base_rms``) or, without them, the missed blocks. A gain drifting alone
+    (the current's harmonics missed, not its linear response) leaves the next cause named instead; the drying's own
+    scorer does not fit the family's forms there (the catalogue's form alone, for the record)."""
+    from labrig.diagnose.engine import CLEAN_ACCURACY, Candidate, _significant, conductance_seen
+
+    dry = Candidate("dehydration", {}, -3000.0, 1.0, 0.28, 0.0, 0.28)
+    relax = Candidate("back_relaxation", {}, -1500.0, 1.0, 0.45, 0.0, 0.45)
+    quiet = {k: 0.7 * a for k, a in CLEAN_ACCURACY.items()}
+    gain_alone = {**quiet, "frf_d": 3.2 * CLEAN_ACCURACY["frf_d"], "harm_i": 3.7 * CLEAN_ACCURACY["harm_i"], "step_d": 16 * CLEAN_ACCURACY["step_d"]}
+    assert not conductance_seen(gain_alone, CLEAN_ACCURACY)
+    rank = lambda rms: [c.name for c in _significant([dry, relax], {k for k, v in rms.items() if v > CLEAN_ACCURACY[k]} - {"eis"},  # noqa: E731
+                                                     base_rms=rms, accuracy=CLEAN_ACCURACY)]
+    assert rank(gain_alone) == ["back_relaxation"]
+    assert rank({**gain_alone, "step_i": 5 * CLEAN_ACCURACY["step_i"]})[0] == "dehydration"
+    assert rank({**gain_alone, "eis": 9 * CLEAN_ACCURACY["eis"]})[0] == "dehydration"  # the spectra alone (no DAQ current)
+    assert [c.name for c in _significant([dry, relax], {"frf_d", "frf_i"})] == ["dehydration", "back_relaxation"]
+    assert [c.name for c in _significant([dry, relax], {"frf_d", "harm_i"})] == ["back_relaxation"]
+
+
 def test_the_fourth_pass_forms_follow_their_physics():
     """The drying curve is continuous in value and rate at its critical moisture and ends at 1; the charge passed
     grows within a record and stops between records; the adsorption branch draws the Langmuir peak's charge

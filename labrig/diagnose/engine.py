@@ -74,6 +74,14 @@ MEMORY_HOLDS = 0.2
 # form happens to fit it (third pass: a form with a free current gain fitted 0 there). Not a threshold: a signature.
 CURRENT_CAUSES = frozenset({"faradaic_current", "strain_resistance"})
 CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
+# A drying takes the water that carries the ions: the conductance falls with the gain (Nafion's conductivity goes as a
+# power of its water content above one; the catalogue's drying lowers the line's CPE and leak with it), so the current's
+# linear response or the spectra move too. Named only where the baseline misses one of those of the held-out half; a
+# gain drifting alone is the sensor's, the clamp's or the geometry's, whatever drying form fits it (fitted there, the
+# conductance's loss came out at 0.4-3 % of the gain's: fresh21's dead pixel, fresh20's spot bubble, fresh21's foam
+# guard). Not a threshold: a signature, as for the current's causes.
+CONDUCTANCE_CAUSES = frozenset({"dehydration"})
+CONDUCTANCE_BLOCKS = frozenset({"frf_i", "step_i", "eis"})
 HARMONIC_BLOCKS = frozenset({"harm_d", "harm_i"})
 LINEAR_BLOCKS = (frozenset({"frf_d", "step_d"}), frozenset({"frf_i", "step_i"}))  # each channel's linear response
 # Families whose forms change these blocks only: where the base misses none of them, no form can lower the held-out
@@ -288,6 +296,13 @@ def missed(rms: dict[str, float], accuracy: dict[str, float] | None = None) -> s
     return {k for k, r in rms.items() if r > accuracy.get(k, 1.0) and k not in UNGAINABLE}
 
 
+def conductance_seen(rms: dict[str, float], accuracy: dict[str, float] | None = None) -> bool:
+    """Whether the baseline misses the current's linear response or the spectra (``CONDUCTANCE_BLOCKS``, the spectra
+    counted though no extension changes them): what a change of the strip's conductance moves."""
+    accuracy = accuracy or CLEAN_ACCURACY
+    return any(rms.get(k, 0.0) > accuracy.get(k, 1.0) for k in CONDUCTANCE_BLOCKS)
+
+
 def heldout_error(rms: dict[str, float], where: set[str] | None = None, accuracy: dict[str, float] | None = None) -> float:
     """Held-out error: the RMS over the blocks ``where`` (those the baseline misses; all blocks if it misses
     none) of each block's RMS residual in units of the baseline's clean accuracy, floored at 1. 1 is as good
@@ -400,7 +415,7 @@ class _Scorer:
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
         self.wet_session = wet  # first round only: a drying is also judged on the wet strip's refitted baseline
         self.valley = valley  # the electrical stage's loosest direction (nuisance.py)
-        rms = block_rms(base_held)
+        rms = self.base_rms = block_rms(base_held)
         self.accuracy = attainable_accuracy(ctx_held)
         self.where = missed(rms, self.accuracy)  # where the base misses the held-out records: the error is measured there
         self.base_heldout = heldout_error(rms, self.where, self.accuracy)
@@ -438,6 +453,7 @@ class _Scorer:
         family = FAMILIES[name]
         only = ONLY_BLOCKS.get(name)
         if (not self.where or (name in CURRENT_CAUSES and not set(self.where) & CURRENT_BLOCKS)
+                or (name in CONDUCTANCE_CAUSES and not conductance_seen(self.base_rms, self.accuracy))
                 or (only is not None and not set(self.where) & only)):
             # it cannot be named (nothing missed: no form gets below 1; a current cause needs the current missed,
             # _significant; a family of ONLY_BLOCKS none of which is missed): the catalogue's form alone, for the record
@@ -577,12 +593,14 @@ def _significant(cands: list[Candidate], missed_blocks: set, ratio: float = RATI
                  base_rms: dict[str, float] | None = None, accuracy: dict[str, float] | None = None) -> list[Candidate]:
     """Significant on the fitted half, ranked by how well they predict the held-out half: an extension
     flexible enough to soak up any residual on the fitted records does not carry over to other pressures. A cause
-    of the current (``CURRENT_CAUSES``) needs a current block among those the base misses (``missed_blocks``).
+    of the current (``CURRENT_CAUSES``) needs a current block among those the base misses (``missed_blocks``), a
+    drying (``CONDUCTANCE_CAUSES``) the current's linear response or the spectra (``conductance_seen``).
     Those that reach every block the base leaves structured (``reaches``) rank first: the signature before the
     score, as for the current."""
     current_seen = bool(set(missed_blocks) & CURRENT_BLOCKS)
+    cond_seen = conductance_seen(base_rms, accuracy) if base_rms is not None else bool(set(missed_blocks) & CONDUCTANCE_BLOCKS)
     ok = (c for c in cands if c.delta_bic < DBIC_EFFECT and c.heldout_ratio < ratio and c.ratio_vs_reference < ratio
-          and (current_seen or c.name not in CURRENT_CAUSES))
+          and (current_seen or c.name not in CURRENT_CAUSES) and (cond_seen or c.name not in CONDUCTANCE_CAUSES))
     ok = sorted(ok, key=lambda c: c.heldout_ratio)
     if base_rms is None or not ok:
         return ok
