@@ -336,6 +336,41 @@ def test_the_pi_operators_sample_their_density_finely_enough_to_follow_it(monkey
     assert np.all(np.diff(used) > 0)
 
 
+def test_the_strain_power_law_widens_its_loss_faster_than_the_bend():
+    """The strain family's power law: at exponent 1 it is the linear form with k / E_REF; at exponent n the loss at
+    twice the bend is 2^n times the loss at it (cracks widening past their onset); the asymmetry puts it on one
+    side of the bend only; the current loses by its own k."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose import families
+    from labrig.diagnose.catalogue import Context
+
+    L = 0.03
+    d = np.array([0.0, 0.5, 1.0, 2.0, -1.0, -2.0]) * families.E_REF * L / 2  # strain proxies 0, 0.5, 1, 2 E_REF and back
+    i = np.full(d.size, 1e-3)
+
+    def loss(form, th):
+        ctx = Context(feats=None, specimens={}, sines=[], steps=[SimpleNamespace()], lines=[], Hd=np.zeros(0, complex),
+                      Hi=np.zeros(0, complex), Hd3=np.zeros(0, complex), step_d=[d.copy()], step_i=[i.copy()],
+                      force_nominal=np.zeros(0), area=1.0, length=L)
+        p = form(np.array(th), ctx)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return 1 - p.step_d[0] / d, 1 - p.step_i[0] / i
+
+    power = families._strain_loss(families._power_law)
+    lin_d, lin_i = loss(families._strain_modulation, (0.1 / families.E_REF, 0.2 / families.E_REF, 0.5))
+    one_d, one_i = loss(power, (0.1, 0.2, 0.5, 1.0))
+    np.testing.assert_allclose(one_d[1:], lin_d[1:], rtol=1e-12)
+    np.testing.assert_allclose(one_i, lin_i, rtol=1e-12)
+    cube_d, cube_i = loss(power, (0.1, 0.2, 0.5, 3.0))
+    assert cube_d[3] == pytest.approx(8 * cube_d[2]) and cube_d[2] == pytest.approx(0.1 * 0.5**3)  # half the strain at a = 0.5
+    assert cube_i[3] == pytest.approx(2 * cube_d[3])
+    one_side_d, _ = loss(power, (0.1, 0.2, 1.0, 2.0))
+    assert one_side_d[3] > 0 and one_side_d[5] == 0.0  # a = 1: only the positive bend's face cracks
+
+
 def test_the_fifth_pass_forms_follow_their_physics():
     """PI on the drive with plays (w > 0) loses gain at small drive, with stops (w < 0) at large drive; PI in the
     displacement path with w > 0 (friction elements that stick) is stiffer for small motions; Norton creep relaxes

@@ -236,28 +236,56 @@ def _read_as(H: np.ndarray, h: np.ndarray, k: int, drv: complex, y: np.ndarray) 
     H[k], h[k] = x[0] / drv, x[1:] / x[0]
 
 
-def _strain_modulation(th, ctx: Context):
+def _strain_loss(law):
     """Electrode resistance rising with the bend, read as an instantaneous loss of gain on displacement and current:
-    y = y_lin (1 - k e), e = 2 (a max(d, 0) + (1 - a) max(-d, 0)) / L (a = 0.5: both electrodes alike; a -> 0 or 1:
-    one electrode, one side of the bend: even harmonics). With a fourth parameter e_s the loss saturates,
-    y_lin (1 - k tanh(e / e_s)) (k then the saturated loss): the cracks' density reaches the film's minimum
-    spacing (Punning et al.) and the resistance stops rising. Harmonics over one period, the step sample by sample."""
-    kd, ki, a, *sat = th
-    p = baseline(ctx)
+    y = y_lin (1 - k law(e)), e = 2 (a max(d, 0) + (1 - a) max(-d, 0)) / L (a = 0.5: both electrodes alike; a -> 0
+    or 1: one electrode, one side of the bend: even harmonics), ``law(e, shape)`` the resistance's law of the strain
+    (the parameters after k_disp, k_cur and a). Harmonics over one period, the step sample by sample."""
 
-    def bend(d):
-        e = 2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length
-        return np.tanh(e / sat[0]) if sat else e
+    def apply(th, ctx: Context):
+        kd, ki, a, *shape = th
+        p = baseline(ctx)
 
-    for k, s in enumerate(ctx.sines):
-        drv = _drive(s)
-        e = bend(s.bend_m + (p.Hd[k] * drv * np.exp(1j * _TH)).real)
-        for H, h, gain in ((p.Hd, p.hd, kd), (p.Hi, p.hi, ki)):
-            _read_as(H, h, k, drv, (H[k] * drv * np.exp(1j * _TH)).real * (1 - gain * e))
-    for k, d in enumerate(p.step_d):
-        e = bend(d)
-        p.step_d[k], p.step_i[k] = d * (1 - kd * e), p.step_i[k] * (1 - ki * e)
-    return p
+        def bend(d):
+            return law(2 * (a * np.clip(d, 0, None) + (1 - a) * np.clip(-d, 0, None)) / ctx.length, shape)
+
+        for k, s in enumerate(ctx.sines):
+            drv = _drive(s)
+            e = bend(s.bend_m + (p.Hd[k] * drv * np.exp(1j * _TH)).real)
+            for H, h, gain in ((p.Hd, p.hd, kd), (p.Hi, p.hi, ki)):
+                _read_as(H, h, k, drv, (H[k] * drv * np.exp(1j * _TH)).real * (1 - gain * e))
+        for k, d in enumerate(p.step_d):
+            e = bend(d)
+            p.step_d[k], p.step_i[k] = d * (1 - kd * e), p.step_i[k] * (1 - ki * e)
+        return p
+
+    return apply
+
+
+def _linear_law(e, shape):
+    """dR/R linear in the strain (a gauge factor)."""
+    return e
+
+
+def _saturating_law(e, shape):
+    """The loss saturating, tanh(e / e_s) (k then the saturated loss): the cracks' density reaches the film's minimum
+    spacing (Punning et al.) and the resistance stops rising."""
+    (e_s,) = shape
+    return np.tanh(e / e_s)
+
+
+E_REF = 0.2  # the bend's strain proxy 2 d / L at a tip deflection of a tenth of the length
+
+
+def _power_law(e, shape):
+    """dR/R as a power of the strain, (e / E_REF)^n (k then the loss at E_REF): cracks that open beyond a strain and
+    widen faster than it (n > 1: a crack's opening goes as the strain past its onset, their number grows with it; the
+    metal bridges across them narrow), or a film whose overlaps or contacts give way gently (n < 1)."""
+    (n,) = shape
+    return (e / E_REF) ** n
+
+
+_strain_modulation = _strain_loss(_linear_law)  # the first form, also for two-parameter callers
 
 
 # ------------------------------------------------------------------------------------------ smooth memory, sensor side
@@ -504,8 +532,11 @@ FAMILIES["strain_resistance"] += [
     _form("strain_resistance", "modulation", ("k_disp", "k_cur", "asymmetry"), (0.05, 0.1, 0.5), (-2.0, -2.0, 0.0), (2.0, 2.0, 1.0),
           _strain_modulation, "gain of displacement and current falling with the bend, y (1 - k e(d)): resistance up with curvature"),
     _form("strain_resistance", "saturating", ("loss_disp", "loss_cur", "asymmetry", "strain_sat"), (0.02, 0.05, 0.5, 0.02),
-          (-0.9, -0.9, 0.0, 1e-3), (0.9, 0.9, 1.0, 0.5), _strain_modulation,
+          (-0.9, -0.9, 0.0, 1e-3), (0.9, 0.9, 1.0, 0.5), _strain_loss(_saturating_law),
           "gain loss with the bend saturating, y (1 - k tanh(e(d)/e_s)): the crack density at its limit"),
+    _form("strain_resistance", "power", ("k_disp", "k_cur", "asymmetry", "exponent"), (0.05, 0.1, 0.5, 1.5),
+          (-2.0, -2.0, 0.0, 0.5), (2.0, 2.0, 1.0, 4.0), _strain_loss(_power_law),
+          "gain loss growing as a power of the bend, y (1 - k (e(d)/e_ref)^n): cracks that open past an onset and widen"),
 ]
 
 
