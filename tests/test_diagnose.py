@@ -515,3 +515,31 @@ def test_the_line_features_read_the_mains_harmonics_and_the_form_starts_from_the
     assert start[keys.index(("d", 250.0))] == pytest.approx(np.sqrt(1.0 - 0.5**2), rel=1e-9)  # um, (1.25 x 0.4)^2 off
     assert start[keys.index(("i", 50.0))] == pytest.approx(5.0, rel=1e-4)
     assert start[keys.index(("d", 50.0))] == 0.0
+
+
+def test_the_flag_loop_is_pinched_and_opens_only_past_its_threshold():
+    """The pinched loop (flag.py): nothing below the threshold; past it the reading gains w per unit of bend up to
+    the travel; unloading it holds its plateau down to x_r and returns to the linear reading, on either side of rest
+    alike (no remanent bend); a sine that never reaches x_f has no describing function, one past it gains and
+    distorts."""
+    import numpy as np
+
+    from labrig.diagnose.flag import flag_df, flag_reading
+
+    w, x_f, x_r, E = 0.05, 4e-3, 2e-3, 3e-3
+    up = np.linspace(0.0, 9e-3, 901)
+    cycle = np.concatenate([up, up[::-1], -up, -up[::-1]])
+    y = flag_reading(cycle, w, x_f, x_r, E)
+    extra = y - cycle
+    n = up.size
+    assert np.all(extra[:n][up <= x_f] == 0.0)
+    np.testing.assert_allclose(extra[:n][(up > x_f) & (up < x_f + E)], w * (up[(up > x_f) & (up < x_f + E)] - x_f), atol=1e-15)
+    assert extra[n - 1] == pytest.approx(w * E)  # the travel used up at 9 mm
+    down = up[::-1]
+    held = (down > x_r + E) & (down < 9e-3)
+    assert np.allclose(extra[n:2 * n][held], w * E)  # the upper plateau holds on the way down
+    assert extra[2 * n - 1] == 0.0 and extra[2 * n] == 0.0  # back at rest: pinched, no remanence
+    np.testing.assert_allclose(extra[2 * n:3 * n], -extra[:n], atol=1e-15)  # the other side alike
+    n1, n3 = flag_df(np.array([3e-3, 8e-3]), w, x_f, x_r, E)
+    assert n1[0] == 0 and n3[0] == 0
+    assert n1[1].real > 0 and abs(n1[1].imag) > 0 and abs(n3[1]) > 0  # a gain, a lag (the loop's area) and distortion

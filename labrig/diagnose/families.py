@@ -28,7 +28,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read)
-from labrig.diagnose import slow_forms as slow, station
+from labrig.diagnose import flag, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
 from labrig.physics import timeresp
@@ -452,6 +452,10 @@ FAMILIES["clamp_relaxation"] += [
           "pressures relax most and first; K_t bar and gain follow it"),
 ]
 FAMILIES["hysteresis"] += [
+    _form("hysteresis", "flag_output", ("weight", "threshold_um", "reverse_share", "travel_um"), (0.05, 2000.0, 0.5, 5000.0),
+          (-1.0, 1.0, 0.0, 1.0), (1.0, 30000.0, 1.0, 30000.0), flag.flag_output,
+          "a pinched (flag) loop in the displacement path, past a threshold x_f and back at x_r: a superelastic element "
+          "bent with the strip, a contact that slips only once loaded (flag.py)", start=flag.flag_start),
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
           _bouc_wen_output, "Bouc-Wen loop in the displacement path, y = d - w z(d), |z| <= z_sat: smooth memory on the sensor side",
           refit_mechanics=True),
