@@ -78,7 +78,7 @@ CURRENT_BLOCKS = frozenset({"frf_i", "harm_i", "step_i"})
 # power of its water content above one; the catalogue's drying lowers the line's CPE and leak with it), so the current's
 # linear response or the spectra move too. Named only where the baseline misses one of those of the held-out half; a
 # gain drifting alone is the sensor's, the clamp's or the geometry's, whatever drying form fits it (fitted there, the
-# conductance's loss came out at 0.4-3 % of the gain's: fresh21's dead pixel, fresh20's spot bubble, fresh21's foam
+# conductance's loss came out at 0.4-3 % of the gain's: fresh21's dead pixel, fresh19's spot bubble, fresh21's foam
 # guard). Not a threshold: a signature, as for the current's causes.
 CONDUCTANCE_CAUSES = frozenset({"dehydration"})
 CONDUCTANCE_BLOCKS = frozenset({"frf_i", "step_i", "eis"})
