@@ -285,7 +285,7 @@ def _power_law(e, shape):
     return (e / E_REF) ** n
 
 
-_strain_modulation = _strain_loss(_linear_law)  # the first form, also for two-parameter callers
+_strain_modulation = _strain_loss(_linear_law)  # the family's first form, "modulation"
 
 
 # ------------------------------------------------------------------------------------------ smooth memory, sensor side
