@@ -218,3 +218,31 @@ def test_an_imported_strip_gets_the_prior_of_a_strip_of_its_own_geometry(preset)
               "medium": "air" if want.fluid.name == "air" else "water"}
     got = base_specimen(sample)
     assert dataclasses.replace(got, clamp=want.clamp, Kt_bar=want.Kt_bar, pressure=want.pressure) == want
+
+
+def test_a_spectrum_in_two_bands_reads_as_one_and_a_repeat_as_the_later(tmp_path):
+    """A lab measuring the low band on a potentiostat's FRA and the high band on an impedance analyser lists two
+    spectra at one pressure (here the high band first, their joint frequency in both): the fit sees the whole
+    spectrum. A spectrum measured again at a pressure is the later moment, used alone, with a note."""
+    from labrig.estimate.session_data import load_session
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    whole = csv_columns(ex / "p612_eis.csv")
+    rows = (ex / "p612_eis.csv").read_text().splitlines()
+    (ex / "p612_fra.csv").write_text("\n".join(rows[:12]) + "\n")  # 11 points up to f[10]
+    (ex / "p612_analyser.csv").write_text("\n".join([rows[0], *rows[11:]]) + "\n")  # f[10] on
+    z3 = csv_columns(ex / "p3062_eis.csv")
+    np.savetxt(ex / "p3062_again.csv", np.column_stack([z3["f_Hz"], 1.1 * z3["z_re_ohm"], 1.1 * z3["z_im_ohm"]]),
+               delimiter=",", header="f_Hz,z_re_ohm,z_im_ohm", comments="", fmt="%.10g")
+    m = (ex / "manifest.toml").read_text().replace('file = "p612_eis.csv"', 'file = "p612_analyser.csv"')
+    m += '\n[[record]]\nkind = "eis"\npressure_kPa = 612\nfile = "p612_fra.csv"\n'
+    m += '\n[[record]]\nkind = "eis"\npressure_kPa = 3062\nfile = "p3062_again.csv"\n'
+    (ex / "manifest.toml").write_text(m)
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    sd = load_session(tmp_path / "s.h5")
+    eis = {p.pressure_kPa: p.eis for p in sd.pressures}
+    np.testing.assert_allclose(eis[612][0], whole["f_Hz"], rtol=1e-9)
+    np.testing.assert_allclose(eis[612][1], whole["z_re_ohm"] + 1j * whole["z_im_ohm"], rtol=1e-9)
+    np.testing.assert_allclose(eis[3062][1], 1.1 * (z3["z_re_ohm"] + 1j * z3["z_im_ohm"]), rtol=1e-8)
+    assert any("repeats the one before it at 3062 kPa" in n for n in sd.notes)

@@ -308,6 +308,43 @@ def held_scan(r: TimeRecord) -> np.ndarray | None:
     return np.r_[True, ~same] if np.mean(same) >= HELD_SCAN_SHARE else None
 
 
+SPECTRUM_REPEAT_SHARE = 0.5  # a second spectrum sharing more of its frequencies than this is a repeat, not a band
+
+
+def join_spectra(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray] | None:
+    """One spectrum from two bands of it (e.g. a potentiostat's FRA below some frequency, an impedance analyser
+    above): the union of their frequencies, ascending, the two values averaged where both measured one. None where
+    they share most of their frequencies (over ``SPECTRUM_REPEAT_SHARE`` of the shorter): that is the spectrum
+    measured again, a moment of its own, not a band of it."""
+    f = np.concatenate([a[0], b[0]]).astype(float)
+    z = np.concatenate([a[1], b[1]]).astype(complex)
+    order = np.argsort(f, kind="stable")
+    f, z = f[order], z[order]
+    same = np.r_[False, np.diff(f) <= 1e-9 * f[1:]]  # the same frequency in both
+    if same.sum() > SPECTRUM_REPEAT_SHARE * min(a[0].size, b[0].size):
+        return None
+    group = np.cumsum(~same) - 1
+    n = int(group[-1]) + 1
+    f_out = np.bincount(group, f, n) / np.bincount(group, None, n)
+    z_out = (np.bincount(group, z.real, n) + 1j * np.bincount(group, z.imag, n)) / np.bincount(group, None, n)
+    return f_out, z_out
+
+
+def _add_spectrum(b: PressureData, f: np.ndarray, z: np.ndarray, t_start: float, name: str, notes: list[str]) -> None:
+    """A pressure's spectrum, or its next band: joined to one already read (its moment the earlier start), or, where it
+    repeats that one, the later measurement kept with a note."""
+    if b.eis is None:
+        b.eis, b.eis_t_start = (f, z), t_start
+        return
+    joined = join_spectra(b.eis, (f, z))
+    if joined is None:
+        notes.append(f"step {name}: spectrum repeats the one before it at {b.pressure_kPa:g} kPa; the later one used")
+        b.eis, b.eis_t_start = (f, z), t_start
+    else:
+        b.eis = joined
+        b.eis_t_start = min(b.eis_t_start, t_start) if np.isfinite(b.eis_t_start) else t_start
+
+
 def load_session(path: str | Path) -> SessionData:
     from labrig.store import SessionReader
 
@@ -336,7 +373,7 @@ def load_session(path: str | Path) -> SessionData:
                 if not _finite(f, z.real, z.imag) or f.size < 3:
                     notes.append(f"step {st.name}: impedance spectrum has NaN or < 3 points, not used")
                 elif bucket is not None:
-                    bucket.eis, bucket.eis_t_start = (f, z), float(st.t_start)
+                    _add_spectrum(bucket, f, z, float(st.t_start), st.name, notes)
                 continue
             if "daq" not in streams:
                 continue
