@@ -517,6 +517,48 @@ def test_the_line_features_read_the_mains_harmonics_and_the_form_starts_from_the
     assert start[keys.index(("d", 50.0))] == 0.0
 
 
+def test_the_contact_hold_follows_the_tip_a_guide_lensing_and_a_floor_lifting_off():
+    """The dry contact whose hold follows the tip (contact.py): against the sample-by-sample definition (the radius
+    at the tip's new place), a guide loading with the bend reads d/(1 + c) on loading, sticks on turning and closes
+    at rest (pinched, a lag at every amplitude alike); a floor's preload holds a small sine still and lets a bend
+    past its lift-off run free."""
+    import numpy as np
+
+    from labrig.diagnose.contact import contact_df, contact_play, radius
+
+    t = np.linspace(0.0, 20.0, 8001)
+    d = 3e-3 * np.sin(2 * np.pi * 0.3 * t) * (1 + 0.5 * np.sin(0.2 * t))
+
+    def by_sample(u, r0, y_off, c):
+        y, out = 0.0, np.empty(u.size)
+        for k, uk in enumerate(u):
+            for _ in range(20):  # the hold at the tip's new place (the fixed point)
+                r = float(radius(y, r0, y_off, c))
+                y_new = min(max(out[k - 1] if k else 0.0, uk - r), uk + r)
+                if abs(y_new - y) < 1e-12:
+                    break
+                y = y_new
+            out[k] = y = y_new
+        return out
+
+    for args in [(2e-4, 1.5e-3, 0.0), (0.0, 1e-2, 0.05), (2e-4, 1e-3, 0.03)]:
+        np.testing.assert_allclose(contact_play(d, *args), by_sample(d, *args), atol=2e-6)  # 2 um in 4.5 mm
+    c = 0.05
+    up = np.linspace(0.0, 4e-3, 401)
+    y = contact_play(np.concatenate([up, up[::-1]]), 0.0, 1.0, c)
+    np.testing.assert_allclose(y[:401], up / (1 + c), rtol=1e-3, atol=1e-7)  # the least hold, 1e-5 of the bend
+    assert y[401] == pytest.approx(y[400])  # turned: it sticks
+    assert abs(y[-1]) < 1e-7  # back at rest, pinched
+    n1, n3 = contact_df(np.array([1e-4, 3e-3]), 0.0, 1.0, c)
+    np.testing.assert_allclose(n1[0], n1[1], rtol=1e-3)  # self-similar: the same loop at any amplitude
+    assert 1 / (1 + c) < abs(n1[0]) < 1 and n1[0].imag < 0  # smaller and lagging
+    r0, y_off = 3e-4, 2e-3
+    n1, _ = contact_df(np.array([2e-4, 5e-3]), r0, y_off, 0.0)
+    assert abs(n1[0]) < 1e-2  # the floor holds a sine smaller than its preload
+    big = contact_play(np.linspace(0.0, 5e-3, 501), r0, y_off, 0.0)
+    assert big[-1] == pytest.approx(5e-3, rel=1e-3)  # past the lift-off the tip runs free
+
+
 def test_the_flag_loop_is_pinched_and_opens_only_past_its_threshold():
     """The pinched loop (flag.py): nothing below the threshold; past it the reading gains w per unit of bend up to
     the travel; unloading it holds its plateau down to x_r and returns to the linear reading, on either side of rest

@@ -9,7 +9,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 |---|---|
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
-| hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; Bouc-Wen loop in the displacement path |
+| hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
@@ -28,7 +28,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read)
-from labrig.diagnose import flag, slow_forms as slow, station
+from labrig.diagnose import contact, flag, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
 from labrig.physics import timeresp
@@ -456,6 +456,10 @@ FAMILIES["hysteresis"] += [
           (-1.0, 1.0, 0.0, 1.0), (1.0, 30000.0, 1.0, 30000.0), flag.flag_output,
           "a pinched (flag) loop in the displacement path, past a threshold x_f and back at x_r: a superelastic element "
           "bent with the strip, a contact that slips only once loaded (flag.py)", start=flag.flag_start),
+    _form("hysteresis", "contact_output", ("preload_um", "liftoff_um", "load_slope", "gain"), (100.0, 3000.0, 0.02, 1.0),
+          (0.0, 10.0, 0.0, 0.2), (10000.0, 30000.0, 0.5, 5.0), contact.contact_output,
+          "a dry contact on the tip whose hold follows where the tip is: a preload the bend relieves (a floor it lifts "
+          "off), a load the bend builds (a guide's walls): contact.py", start=contact.contact_start),
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
           _bouc_wen_output, "Bouc-Wen loop in the displacement path, y = d - w z(d), |z| <= z_sat: smooth memory on the sensor side",
           refit_mechanics=True),
