@@ -1,6 +1,7 @@
 """``labrig import``: a manifest of CSVs becomes a session like a measured one; every bad input is exit 2, one line."""
 
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -246,3 +247,24 @@ def test_a_spectrum_in_two_bands_reads_as_one_and_a_repeat_as_the_later(tmp_path
     np.testing.assert_allclose(eis[612][1], whole["z_re_ohm"] + 1j * whole["z_im_ohm"], rtol=1e-9)
     np.testing.assert_allclose(eis[3062][1], 1.1 * (z3["z_re_ohm"] + 1j * z3["z_im_ohm"]), rtol=1e-8)
     assert any("repeats the one before it at 3062 kPa" in n for n in sd.notes)
+
+
+def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path):
+    """A lab that writes the load cell's reading on each record, not the setpoint, gives a relaxing clamp a new
+    pressure on every record: the records of one setting are still one setting (its pressure their median), two
+    settings stay two, and the loader says what it grouped."""
+    from labrig.estimate.session_data import clamp_settings, load_session
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    m = (ex / "manifest.toml").read_text().split("[[record]]")
+    read = iter([611.8, 604.9, 598.2, 3049.5, 3031.0])  # the manifest's records in order, each as the load cell read it
+    m = [m[0]] + [re.sub(r"pressure_kPa = \d+", lambda _: f"pressure_kPa = {next(read)}", part) for part in m[1:]]
+    (ex / "manifest.toml").write_text("[[record]]".join(m))
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    sd = load_session(tmp_path / "s.h5")
+    assert [p.pressure_kPa for p in sd.pressures] == [604.9, pytest.approx(3040.25)]
+    assert len(sd.pressures[0].records) == 2 and sd.pressures[0].eis is not None and sd.pressures[1].eis is not None
+    assert any("5 distinct clamp pressures read on the records, grouped into 2 clamp settings" in n for n in sd.notes)
+    # seed 001's closest settings (500 ... 1700 kPa, 1300 -> 1700 the nearest) and setpoints stay as they are
+    assert clamp_settings([500.0, 900.0, 1300.0, 1700.0, 1300.0]) == {500.0: 500.0, 900.0: 900.0, 1300.0: 1300.0, 1700.0: 1700.0}

@@ -308,6 +308,30 @@ def held_scan(r: TimeRecord) -> np.ndarray | None:
     return np.r_[True, ~same] if np.mean(same) >= HELD_SCAN_SHARE else None
 
 
+# readings of one clamp setting lie closer than this (in ln kPa) to their neighbours: a relaxing clamp read record by
+# record drifts by a percent or two between records, while a sweep's settings stand 30 % (seed 001's 1300 -> 1700 kPa)
+# to 200 % apart
+SETTING_GAP = 0.08
+
+
+def clamp_settings(readings: list[float]) -> dict[float, float]:
+    """Each record's clamp pressure (kPa) -> its setting's: a lab that writes the load cell's reading on each record,
+    not the setpoint, gives a new value on every record of a setting as the clamp relaxes. Sorted, readings within
+    ``SETTING_GAP`` of the next (in ln p) are one setting, its pressure the median of its records' readings; exact
+    setpoints map to themselves."""
+    if not readings:
+        return {}
+    vals = np.sort(np.asarray(readings, float))
+    logs = np.log(np.maximum(vals, 1e-9))
+    group = np.r_[0, np.cumsum(np.diff(logs) > SETTING_GAP)]
+    out: dict[float, float] = {}
+    for g in np.unique(group):
+        members = vals[group == g]
+        rep = float(np.median(members)) if np.ptp(members) > 0 else float(members[0])
+        out.update({float(v): rep for v in members})
+    return out
+
+
 SPECTRUM_REPEAT_SHARE = 0.5  # a second spectrum sharing more of its frequencies than this is a repeat, not a band
 
 
@@ -357,6 +381,11 @@ def load_session(path: str | Path) -> SessionData:
     rounded = scanned = held_rows = 0
     with SessionReader(p) as r:
         sample = dict(r.sample)
+        readings = [float(st.metadata["pressure_kPa"]) for st in r.steps() if st.metadata.get("pressure_kPa") is not None]
+        setting = clamp_settings(readings)
+        if len(set(setting.values())) < len(setting):
+            notes.append(f"{len(setting)} distinct clamp pressures read on the records, grouped into "
+                         f"{len(set(setting.values()))} clamp settings (each the median of its readings)")
         for st in r.steps():
             if st.status not in ("done",) or st.kind in HOLD_KINDS:
                 if st.status not in ("done", "skipped") and st.kind not in HOLD_KINDS:
@@ -365,7 +394,8 @@ def load_session(path: str | Path) -> SessionData:
             pk = st.metadata.get("pressure_kPa")
             bucket = None
             if pk is not None:
-                bucket = by_p.setdefault(float(pk), PressureData(float(pk)))
+                key = setting[float(pk)]
+                bucket = by_p.setdefault(key, PressureData(key))
             streams = r.streams(st)
             if st.kind == RecordKind.EIS and "eis" in streams:
                 s = r.stream(st, "eis")
