@@ -5,7 +5,7 @@ the command line): tests/test_diagnose_injected.py, which exports that sweep onc
 import numpy as np
 import pytest
 
-from labrig.diagnose.clipping import CLIP_RUN, WRAP_SHARE, channel_clip, largest_jump, wrapping
+from labrig.diagnose.clipping import CLIP_RUN, WRAP_SHARE, channel_clip, clipping, largest_jump, rail_records, wrapping
 from labrig.estimate.session_data import PressureData, SessionData, TimeRecord
 from labrig.records import RecordKind
 
@@ -40,6 +40,30 @@ def test_smooth_tops_noise_and_setpoints_are_not_clipping(rng):
     assert not channel_clip(np.where(np.arange(30000) >= 15000, 1.0, 0.0))["clipped"]
     # a noisy plateau below the range's end
     assert not channel_clip(_read(np.where(np.arange(30000) >= 15000, 1.0, 0.0), 2e-4, rng, top=1.05))["clipped"]
+
+
+def _records(channel: list[np.ndarray]) -> SessionData:
+    """A session of sine records whose displacement is each of ``channel``."""
+    recs = []
+    for k, d in enumerate(channel):
+        t = np.arange(d.size) / 60.0
+        recs.append(TimeRecord(f"p612/sine_{k}", RecordKind.STEPPED_SINE, {"pressure_kPa": 612.0}, t, 0.5 * np.sin(2 * np.pi * 0.1 * t),
+                               1e-3 * np.sin(2 * np.pi * 0.1 * t), d, np.zeros(0), 0.0, np.zeros(0)))
+    return SessionData("s.h5", {}, [PressureData(612.0, records=recs)], [], [])
+
+
+def test_a_rail_is_one_level_and_a_strip_held_at_its_own_extremes_is_none(rng):
+    """Records clipped on a sensor's rail sit at one level each side, give or take each record's tare; a strip held by
+    dry friction stops at each record's own extremes, which move with its amplitude: held readings, no rail."""
+    t = np.arange(6000) / 60.0
+    railed = [_read(a * np.sin(2 * np.pi * 0.1 * t), 2e-4, rng, top=0.9) + tare for a, tare in zip((1.0, 1.1, 1.3, 1.6), (0, 3e-3, -4e-3, 6e-3))]
+    assert all(channel_clip(x)["clipped"] for x in railed)
+    assert rail_records([channel_clip(x) for x in railed]) == 4 and clipping(_records(railed), 2)["flagged"]
+
+    # held at 0.9 of each record's own swing (a hold that moves with the amplitude: the strip's, no sensor's)
+    held = [_read(a * np.sin(2 * np.pi * 0.1 * t), 2e-4, rng, top=0.9 * a) for a in (0.3, 0.45, 0.6, 0.75, 0.9)]
+    assert all(channel_clip(x)["clipped"] for x in held)  # each record alone looks railed
+    assert rail_records([channel_clip(x) for x in held]) <= 2 and not clipping(_records(held), 2)["flagged"]
 
 
 def _step(fs: float = 500.0, peak: float = 8.8e-3, tau: float = 0.15, noise: float = 2e-7, rng=None):

@@ -40,6 +40,11 @@ MOVING = 0.2  # the share of readings away from the extremes that differ from th
 CHANNELS = {"drive": "v", "current": "i", "displacement": "d"}
 UNITS = {"drive": "V", "current": "A", "displacement": "m"}
 MIN_SAMPLES = 50
+# A rail is one level (a converter's last code, a sensor's range end): one record's held level from another's by at most
+# a per-record tare (a strip's rest offset, a few percent of a rail); fresh24's tip sticking on a guide held each
+# record at its own extremes, 32 records at 49 levels from -0.45 to +0.33 mm, no two rails holding a quarter of them
+RAIL_SPREAD = 0.02
+RAIL_SHARE = 0.5
 # A wrap changes the reading by the whole range in one sample (fresh17's register: 6.55 mm of a record spanning 6.55 mm);
 # a strip's response at most by what it moves in a sample after an edge (away from the edges: at most 0.050 of the
 # record's span on the tuning set's 40 sessions, 0.058 on every other cached session but a drive on its own clock,
@@ -137,14 +142,29 @@ def wrapping(sd: SessionData, min_records: int) -> dict[str, Any]:
     return {"channels": flagged, "records": per, "largest_share": worst, "wrap_share": WRAP_SHARE, "flagged": bool(flagged)}
 
 
+def rail_records(clips: list[dict[str, Any]]) -> int:
+    """How many of a channel's held records sit at its rails: levels within ``RAIL_SPREAD`` of their size of the next
+    (single linkage) are one rail; a channel has two at most, the ends of its range."""
+    levels = sorted((x, k) for k, c in enumerate(clips) for x in c["levels"])
+    if not levels:
+        return 0
+    rails: list[set[int]] = [{levels[0][1]}]
+    for (x0, _), (x1, k) in zip(levels, levels[1:]):
+        if x1 - x0 > RAIL_SPREAD * max(abs(x0), abs(x1)):
+            rails.append(set())
+        rails[-1].add(k)
+    return len(set().union(*sorted(rails, key=len)[-2:]))
+
+
 def clipping(sd: SessionData, min_records: int) -> dict[str, Any]:
     """Per channel, the records that clip, the level and the longest run; flagged where one channel clips in
-    ``min_records`` records or more."""
+    ``min_records`` records or more, most of them (``RAIL_SHARE``) at its rails (``rail_records``): a range's end is
+    one level whatever the record, where a strip held by dry friction stops at each record's own extremes."""
     per: dict[str, list[dict[str, Any]]] = {}
     for r in sd.all_records():
         for ch, c in record_clips(r).items():
             per.setdefault(ch, []).append(c)
-    flagged = sorted(ch for ch, v in per.items() if len(v) >= min_records)
+    flagged = sorted(ch for ch, v in per.items() if len(v) >= min_records and rail_records(v) >= max(min_records, RAIL_SHARE * len(v)))
     return {"channels": flagged, "records": {ch: [c["record"] for c in v] for ch, v in per.items()},
             "levels": {ch: sorted({float(f"{x:.4g}") for c in v for x in c["levels"]}) for ch, v in per.items()},
             "longest_run": max((c["run"] for v in per.values() for c in v), default=0),
