@@ -25,6 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, _drive, baseline
+from labrig.diagnose.flag import largest_bend
 
 _N = 64  # points per cycle of the sines' periodic state
 _CYCLES = 2  # the first cycle settles the contact from rest, the second is read
@@ -104,6 +105,5 @@ def contact_output(th, ctx: Context):
 def contact_start(ctx: Context) -> np.ndarray:
     """A start read off the data: a preload of 0.03 of the largest bend the steps or sines read, lifted off at half
     of it, a light load with the bend."""
-    big = max([float(np.max(np.abs(st.d))) for st in ctx.steps if np.size(st.d)] +
-              [abs(complex(h * _drive(s))) for s, h in zip(ctx.sines, ctx.Hd)] + [1e-4])
+    big = largest_bend(ctx)
     return np.array([0.03 * big * 1e6, 0.5 * big * 1e6, 0.02, 1.0])

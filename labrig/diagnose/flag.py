@@ -65,9 +65,14 @@ def flag_output(th, ctx: Context):
     return p
 
 
+def largest_bend(ctx: Context) -> float:
+    """The largest bend (m) the steps or sines read (0.1 mm at least)."""
+    return max([float(np.max(np.abs(st.d))) for st in ctx.steps if np.size(st.d)] +
+               [abs(complex(h * _drive(s))) for s, h in zip(ctx.sines, ctx.Hd)] + [1e-4])
+
+
 def flag_start(ctx: Context) -> np.ndarray:
     """A start read off the data: the threshold at 0.4 of the largest bend the steps or sines read, the reverse at
     half of it, the travel that bend (a loop that opens within the records)."""
-    big = max([float(np.max(np.abs(st.d))) for st in ctx.steps if np.size(st.d)] +
-              [abs(complex(h * _drive(s))) for s, h in zip(ctx.sines, ctx.Hd)] + [1e-4])
+    big = largest_bend(ctx)
     return np.array([0.05, 0.4 * big * 1e6, 0.5, big * 1e6])
