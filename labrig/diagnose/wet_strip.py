@@ -179,13 +179,13 @@ def refitted_contexts(ws: WetSession, corrected: SessionData, feats: Features, b
     return cf, cf if ws.fit_set == ws.held_set else build(feats, specimens, ws.held_set)
 
 
-def refine_loss(k0: float, on_wet: Callable[[float], Any]) -> Any:
+def refine_loss(k0: float, on_wet: Callable[[float], Any], first: Any = None) -> Any:
     """The candidate ``on_wet(k)`` of least fitted-half chi-square (``chi2_fit``) over a few conductance losses from
     the admittance's reading k0 on: k0, then steps of REFINE_STEP (relative, at least REFINE_FLOOR) uphill or down
     while the chi-square falls, at most REFINE_EVALS refits (each a seed-000 fit, ~2.5 s). The reading is biased
     where the loss is not the form's shape within a pressure (a loss that speeds up late reads low early)."""
     lo, hi = LOSS_BOUNDS
-    best = on_wet(k0)
+    best = first if first is not None else on_wet(k0)  # ``first``: on_wet(k0), already fitted
     if best is None:
         return None
     step = max(REFINE_STEP * abs(k0), REFINE_FLOOR)
