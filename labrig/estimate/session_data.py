@@ -381,12 +381,13 @@ def load_session(path: str | Path) -> SessionData:
     rounded = scanned = held_rows = 0
     with SessionReader(p) as r:
         sample = dict(r.sample)
-        readings = [float(st.metadata["pressure_kPa"]) for st in r.steps() if st.metadata.get("pressure_kPa") is not None]
+        steps = r.steps()  # read once: the clamp settings are grouped from all of them before any is bucketed
+        readings = [float(st.metadata["pressure_kPa"]) for st in steps if st.metadata.get("pressure_kPa") is not None]
         setting = clamp_settings(readings)
         if len(set(setting.values())) < len(setting):
             notes.append(f"{len(setting)} distinct clamp pressures read on the records, grouped into "
                          f"{len(set(setting.values()))} clamp settings (each the median of its readings)")
-        for st in r.steps():
+        for st in steps:
             if st.status not in ("done",) or st.kind in HOLD_KINDS:
                 if st.status not in ("done", "skipped") and st.kind not in HOLD_KINDS:
                     notes.append(f"step {st.name}: {st.status}, not used")
