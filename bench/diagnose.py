@@ -84,8 +84,11 @@
 * Fresh25 held-out set (``--set fresh25``, bench/inject_fresh25.py ``fresh25_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 145-147, the paper
   strip 21 mm free, a new data shape (each record's clamp pressure as the load cell read it, not the setpoint).
+* Fresh26 held-out set (``--set fresh26``, bench/inject_fresh26.py ``fresh26_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 148-150, the paper
+  strip 19 mm free, a new data shape (the laser on the strip's other face: every displacement with the opposite sign).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|fresh26|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -185,7 +188,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh22": "fresh22 held-out set (diagnosed once unseen at 77a16f7; seen since)",
           "fresh23": "fresh23 held-out set (diagnosed once unseen at 11de4fd; seen since)",
           "fresh24": "fresh24 held-out set (diagnosed once unseen at b4fec67; seen since)",
-          "fresh25": "fresh25 held-out set (unseen: no threshold saw it)"}
+          "fresh25": "fresh25 held-out set (diagnosed once unseen at d5e0db3; seen since)",
+          "fresh26": "fresh26 held-out set (unseen: no threshold saw it)"}
 
 
 def validation(a, name: str = "validation") -> list:
