@@ -21,12 +21,19 @@ from labrig.jsonable import jsonable
 
 def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     """The session's data and its seed-000 fit: what `fit` reports and `diagnose` builds on (done once)."""
+    from labrig.fit.polarity import displacement_sign
     from labrig.fit.seed000 import fit_seed000
     from labrig.estimate.session_data import load_session
 
     sd = load_session(path)
     if not sd.pressures and not sd.unpressured:
         raise BadInput(f"{path}: no finished records to {what}")
+    sign, agreement, source = displacement_sign(sd)
+    if sign < 0:  # the rig reads the bend reversed (labrig.fit.polarity): the data taken with the model's sign
+        sd = load_session(path, displacement_sign=-1)
+        sd.notes.append(f"the displacement runs against the drive ({source}: agreement {agreement:+.2f}): a laser facing "
+                        "the strip's other face, a strip clamped the other way round or an inverted sensor output; "
+                        "every displacement read with the opposite sign")
     return sd, fit_seed000(sd)
 
 

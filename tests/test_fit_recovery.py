@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from labrig.fit import seed000_problem as sp000
-from labrig.fit.seed000 import fit_seed000, prior_specimens
+from labrig.fit.seed000 import fit_seed000, prior_specimens, staged_specimens
 from labrig.estimate.session_data import SessionData, load_session
 from labrig.physics import transfer
 from labrig.physics.params import TABLE1, TABLE2_KT_BAR, Specimen
@@ -109,6 +109,17 @@ def test_recovery_coverage_over_seeds(fits):
     worst = max(errors, key=lambda e: e[1])
     assert worst[1] < 5, worst  # a linearised stderr: the line's R_p has read 3.2 and 4.25 sigma on clean seeds
     assert max(e[2] for e in errors if e[0] == "f1") < 0.01
+
+
+def test_the_staged_strip_alone_is_the_full_fits_staged_strip(fits):
+    """``staged_specimens`` (the diagnosis' wet-strip refits) stops before the joint refinement and gives exactly the
+    strip the full fit stages, which the joint refinement then moves (so stopping is not a no-op)."""
+    sd = load_session(fits[SEEDS[1]][0])
+    full = fit_seed000(sd)
+    staged = staged_specimens(sd)
+    assert staged.keys() == full.staged_specimens.keys() == full.specimens.keys()
+    assert all(staged[p] == full.staged_specimens[p] for p in staged)
+    assert any(staged[p].Kt_bar != full.specimens[p].Kt_bar for p in staged)
 
 
 def test_default_sweep_recovers_tables_1_and_2(fits):

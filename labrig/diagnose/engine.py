@@ -475,8 +475,8 @@ class _Scorer:
             # forms that predict best on the baseline; the baseline's absorbed drying reorders them (a form second on
             # it can be first on the wet strip), so more than the first is tried
             # each at the admittance's reading of the conductance loss, then that loss refined for the one that
-            # predicts best there (a refinement is two more seed-000 refits: fresh24's hygrostat drying took 91 s
-            # refining all three)
+            # predicts best there (a refinement is two more refits of the seed-000 fit's stages: fresh24's hygrostat
+            # drying took 91 s refining all three, 71 s one, 56 s with the stages alone)
             tried = [w for c in sorted(forms, key=_choice)[:WET_FORMS]
                      if c.delta_bic < DBIC_EFFECT and RATIO_EFFECT < c.heldout_ratio < 1.0
                      and (w := self.wet(c)) is not None and w[0] is not None]
@@ -754,6 +754,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
+    recording["displacement_sign"] = sd.displacement_sign  # -1: the rig reads the bend reversed (fit/polarity.py)
     monitor = drive_monitor(feats.sines, MIN_RECORDS)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain (not where the

@@ -16,7 +16,8 @@ or the spectrum's own moment), is the conductance's loss k_i (``conductance_loss
 
 With k_i so and the displacement's loss k_d from the form fitted on the baseline, the session's records are corrected
 to the wet strip (displacement / (1 - k_d x), current / (1 - k_i x), each sample at its own time; a spectrum x (1 - k_i
-x) at its start), the seed-000 fit is run on them, and the form is fitted again on that wet baseline, whose spectra are
+x) at its start), the seed-000 fit's stages are run on them (``seed000.staged_specimens``: the joint refinement,
+which the baseline does not stand on, left out), and the form is fitted again on that wet baseline, whose spectra are
 dried again at their moments (no form changes a spectrum). It is scored as every form: DeltaBIC on the fitted half
 (the two corrections counted as parameters), the held-out ratio against the session's own baseline. k_i is read off
 the fitted half's pressures only; the refit uses every pressure, as the baseline does.
@@ -37,7 +38,7 @@ from labrig.diagnose.catalogue import Context, Extension
 from labrig.diagnose.features import Features
 from labrig.estimate import sine_estimate
 from labrig.estimate.session_data import PressureData, SessionData, add_derived, sine_cycles
-from labrig.fit.seed000 import fit_seed000
+from labrig.fit.seed000 import staged_specimens
 from labrig.records import RecordKind
 
 LOSS_BOUNDS = (-0.5, 0.9)  # the corrections' range (a re-wetting may gain; a strip loses at most most of its water)
@@ -169,10 +170,9 @@ def wet_contexts(ws: WetSession, feats: Features, ext: Extension, corr: dict[str
 
 def refitted_contexts(ws: WetSession, corrected: SessionData, feats: Features, build) -> tuple[Context, Context] | None:
     """The fitted and held-out contexts (``build``: ``engine.build_context``) of the recorded features ``feats`` on the
-    seed-000 fit of the ``corrected`` session (the same context twice where the halves are the same records). None if
+    seed-000 fit's stages on the ``corrected`` session (the same context twice where the halves are the same records). None if
     that fit gives no strip."""
-    fit = fit_seed000(corrected)
-    specimens = fit.staged_specimens or fit.specimens
+    specimens = staged_specimens(corrected)  # the baseline's stages: the joint refinement is not what it stands on
     if not specimens:
         return None
     cf = build(feats, specimens, ws.fit_set)
@@ -182,7 +182,7 @@ def refitted_contexts(ws: WetSession, corrected: SessionData, feats: Features, b
 def refine_loss(k0: float, on_wet: Callable[[float], Any], first: Any = None) -> Any:
     """The candidate ``on_wet(k)`` of least fitted-half chi-square (``chi2_fit``) over a few conductance losses from
     the admittance's reading k0 on: k0, then steps of REFINE_STEP (relative, at least REFINE_FLOOR) uphill or down
-    while the chi-square falls, at most REFINE_EVALS refits (each a seed-000 fit, ~2.5 s). The reading is biased
+    while the chi-square falls, at most REFINE_EVALS refits (each the seed-000 fit's stages). The reading is biased
     where the loss is not the form's shape within a pressure (a loss that speeds up late reads low early)."""
     lo, hi = LOSS_BOUNDS
     best = first if first is not None else on_wet(k0)  # ``first``: on_wet(k0), already fitted

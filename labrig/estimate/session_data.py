@@ -141,6 +141,7 @@ class SessionData:
     pressures: list[PressureData]
     notes: list[str] = field(default_factory=list)
     unpressured: list[TimeRecord] = field(default_factory=list)  # records without a pressure
+    displacement_sign: int = 1  # -1: every displacement read with the opposite sign (labrig.fit.polarity)
 
     def all_records(self) -> list[TimeRecord]:
         return [r for p in self.pressures for r in p.records] + self.unpressured
@@ -369,7 +370,10 @@ def _add_spectrum(b: PressureData, f: np.ndarray, z: np.ndarray, t_start: float,
         b.eis_t_start = min(b.eis_t_start, t_start) if np.isfinite(b.eis_t_start) else t_start
 
 
-def load_session(path: str | Path) -> SessionData:
+def load_session(path: str | Path, displacement_sign: int = 1) -> SessionData:
+    """A session's records grouped by clamp setting, with what they give once loaded (``add_derived``);
+    ``displacement_sign`` -1: every displacement read with the opposite sign (a rig whose laser reads the strip's
+    bend reversed: labrig.fit.polarity)."""
     from labrig.store import SessionReader
 
     p = Path(path)
@@ -410,7 +414,7 @@ def load_session(path: str | Path) -> SessionData:
                 continue
             s = r.stream(st, "daq")
             fs_ = r.stream(st, "force") if "force" in streams else {"force_N": np.zeros(0), "t_s": np.zeros(0)}
-            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], s["i_A"], s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
+            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], s["i_A"], displacement_sign * s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
@@ -454,7 +458,7 @@ def load_session(path: str | Path) -> SessionData:
         notes.append(f"{rounded} records' time stamps are a uniform clock rounded to a grid: read on that clock's grid")
     for b in by_p.values():
         add_derived(b, notes)
-    return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose)
+    return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose, displacement_sign)
 
 
 def add_derived(b: PressureData, notes: list[str] | None = None) -> None:

@@ -288,8 +288,9 @@ def _measured_actuation(d: PressureData) -> tuple[float | None, float | None]:
     return peak, harm
 
 
-def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit) -> lmfit.Parameters | None:
-    """The fit stages the data allow; the final parameter set (None if nothing could be fitted)."""
+def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit, joint: bool = True) -> lmfit.Parameters | None:
+    """The fit stages the data allow; the final parameter set (None if nothing could be fitted). ``joint`` False:
+    the staged strip alone (``fit.staged_specimens``), without the joint refinement (``staged_specimens``)."""
     with_eis = [d for d in sd.pressures if d.eis is not None]
     with_frf = [d for d in sd.pressures if (lines := d.frf_lines()) is not None and lines[0].size >= MIN_FRF_LINES]
     final = None
@@ -307,6 +308,8 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit)
         electrical = final if final is not None else _prior_electrical(priors)
         pars = fit_frf(with_frf, priors, electrical)
         fit.staged_specimens = _specimens(priors, pars)
+        if not joint:
+            return pars
         if with_eis:
             pars = joint_params(with_eis, with_frf, final, pars)
         problem = Problem(priors, eis=with_eis, frf=with_frf, sigma_eis=fit.eis_noise_rel or 1.0)
@@ -375,6 +378,18 @@ def _row(d: PressureData, fit: Seed000Fit, final: lmfit.Parameters | None, prior
         if forces:  # the pressure the bench actually applied (the load cell), next to the nominal one
             row["pressure_measured_kPa"] = row["force_N_mean"] / prior.geometry.clamp_area / 1e3
     return row, sp
+
+
+def staged_specimens(sd: SessionData) -> dict[float, Specimen]:
+    """The strip per pressure from the fit's stages alone (electrical values from the spectra, mechanics from the FRF
+    with them held: ``Seed000Fit.staged_specimens``), the priors where no stage can run. The diagnosis' baseline
+    (``diagnose.engine.baseline_specimens``) without the joint refinement, which it does not use: the wet strip's
+    refits (diagnose/wet_strip.py) run this, not ``fit_seed000``."""
+    fit = Seed000Fit([])
+    priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
+    if sd.pressures:
+        _run_stages(sd, priors, fit, joint=False)
+    return fit.staged_specimens or priors
 
 
 def fit_seed000(sd: SessionData) -> Seed000Fit:
