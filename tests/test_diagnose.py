@@ -585,3 +585,28 @@ def test_the_flag_loop_is_pinched_and_opens_only_past_its_threshold():
     n1, n3 = flag_df(np.array([3e-3, 8e-3]), w, x_f, x_r, E)
     assert n1[0] == 0 and n3[0] == 0
     assert n1[1].real > 0 and abs(n1[1].imag) > 0 and abs(n3[1]) > 0  # a gain, a lag (the loop's area) and distortion
+
+
+def test_the_flag_keeps_a_loop_a_memoryless_knee_does_not_have():
+    """A reading that compresses past a knee with no memory (a laser's linearisation table run out) is a flag with
+    x_r = x_f. The family's flag form stops at x_r = REVERSE_SHARE_MAX x_f, so fitted to the knee over load and unload
+    it leaves a misfit that the same form free to x_r = x_f does not: the loop it must keep is memory the data lack."""
+    import numpy as np
+    from scipy.optimize import least_squares
+
+    from labrig.diagnose.families import FAMILIES
+    from labrig.diagnose.flag import REVERSE_SHARE_MAX, flag_reading
+
+    form = next(e for e in FAMILIES["hysteresis"] if e.form == "flag_output")
+    assert form.hi[form.params.index("reverse_share")] == REVERSE_SHARE_MAX < 1.0
+    up = np.linspace(0.0, 4e-3, 401)
+    bend = np.concatenate([up, up[::-1], -up, -up[::-1]])
+    knee = flag_reading(bend, -0.15, 2.4e-3, 2.4e-3, 2e-3)  # no loop: x_r = x_f
+
+    def misfit(share_max: float) -> float:
+        res = lambda th: (flag_reading(bend, th[0], th[1] * 1e-3, th[2] * th[1] * 1e-3, th[3] * 1e-3) - knee) * 1e6  # noqa: E731
+        fits = [least_squares(res, x0, bounds=([-1, 0.01, 0, 0.01], [1, 30, share_max, 30])) for x0 in
+                ([-0.1, 2.0, 0.5, 2.0], [-0.1, 2.4, 0.7, 2.0], [-0.2, 3.0, 0.3, 1.0])]
+        return min(float(np.sqrt(np.mean(f.fun**2))) for f in fits)  # um RMS
+
+    assert misfit(1.0) < 0.05 and misfit(REVERSE_SHARE_MAX) > 10 * misfit(1.0) + 1.0

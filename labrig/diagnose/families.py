@@ -453,7 +453,7 @@ FAMILIES["clamp_relaxation"] += [
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "flag_output", ("weight", "threshold_um", "reverse_share", "travel_um"), (0.05, 2000.0, 0.5, 5000.0),
-          (-1.0, 1.0, 0.0, 1.0), (1.0, 30000.0, 1.0, 30000.0), flag.flag_output,
+          (-1.0, 1.0, 0.0, 1.0), (1.0, 30000.0, flag.REVERSE_SHARE_MAX, 30000.0), flag.flag_output,
           "a pinched (flag) loop in the displacement path, past a threshold x_f and back at x_r: a superelastic element "
           "bent with the strip, a contact that slips only once loaded (flag.py)", start=flag.flag_start),
     _form("hysteresis", "contact_output", ("preload_um", "liftoff_um", "load_slope", "gain"), (100.0, 3000.0, 0.02, 1.0),
