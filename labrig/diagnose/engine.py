@@ -58,7 +58,7 @@ DBIC_EFFECT = -25.0  # evidence needed to name an effect
 RATIO_EFFECT = 0.5
 # the fitted half's structure that makes a verdict of its own where the held-out half has none, over each block's
 # attainable accuracy: the staged baseline there, not refitted (the reference is fitted on that half), reads up to 2.36
-# on clean sessions (fresh21's seed-001 sweep, frf_d; fresh19-26, seen) and 877 on fresh26's lodged flake
+# on clean sessions (fresh19's seed-001 sweep, frf_d; fresh19-26, seen) and 877 on fresh26's lodged flake
 FIT_HALF_MARGIN = 5.0
 # a baseline missing by less than twice its floor cannot be halved (each block's error floors at 1): there, and above,
 # an effect may instead remove all but this share of the error above the floor (set on the seen sets' weak cases:
