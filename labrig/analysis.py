@@ -21,19 +21,24 @@ from labrig.jsonable import jsonable
 
 def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     """The session's data and its seed-000 fit: what `fit` reports and `diagnose` builds on (done once)."""
-    from labrig.fit.polarity import displacement_sign
+    from labrig.fit.polarity import current_sign, displacement_sign
     from labrig.fit.seed000 import fit_seed000
     from labrig.estimate.session_data import load_session
 
     sd = load_session(path)
     if not sd.pressures and not sd.unpressured:
         raise BadInput(f"{path}: no finished records to {what}")
-    sign, agreement, source = displacement_sign(sd)
-    if sign < 0:  # the rig reads the bend reversed (labrig.fit.polarity): the data taken with the model's sign
-        sd = load_session(path, displacement_sign=-1)
-        sd.notes.append(f"the displacement runs against the drive ({source}: agreement {agreement:+.2f}): a laser facing "
-                        "the strip's other face, a strip clamped the other way round or an inverted sensor output; "
-                        "every displacement read with the opposite sign")
+    (d_sign, d_agree, d_source), (i_sign, i_agree, i_source) = displacement_sign(sd), current_sign(sd)
+    if d_sign < 0 or i_sign < 0:  # the rig's own sign conventions (labrig.fit.polarity): read with the model's
+        sd = load_session(path, displacement_sign=d_sign, current_sign=i_sign)
+        if d_sign < 0:
+            sd.notes.append(f"the displacement runs against the drive ({d_source}: agreement {d_agree:+.2f}): a laser facing "
+                            "the strip's other face, a strip clamped the other way round or an inverted sensor output; "
+                            "every displacement read with the opposite sign")
+        if i_sign < 0:
+            sd.notes.append(f"the current runs against the drive ({i_source}: agreement {i_agree:+.2f}), where the strip "
+                            "is passive: a potentiostat counting the other current positive or a shunt wired the other "
+                            "way; every current read with the opposite sign")
     return sd, fit_seed000(sd)
 
 

@@ -758,7 +758,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
-    recording["displacement_sign"] = sd.displacement_sign  # -1: the rig reads the bend reversed (fit/polarity.py)
+    # -1: the rig reads the bend (the current) reversed, taken with the model's sign before the fit (fit/polarity.py)
+    recording["displacement_sign"], recording["current_sign"] = sd.displacement_sign, sd.current_sign
     monitor = drive_monitor(feats.sines, MIN_RECORDS)
     # forward selection: with one cause accepted, the others are fitted and scored on top of it, so a second
     # effect is judged against what the first leaves, not against a residual it cannot explain (not where the

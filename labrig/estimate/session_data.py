@@ -142,6 +142,7 @@ class SessionData:
     notes: list[str] = field(default_factory=list)
     unpressured: list[TimeRecord] = field(default_factory=list)  # records without a pressure
     displacement_sign: int = 1  # -1: every displacement read with the opposite sign (labrig.fit.polarity)
+    current_sign: int = 1  # -1: every current read with the opposite sign (labrig.fit.polarity)
 
     def all_records(self) -> list[TimeRecord]:
         return [r for p in self.pressures for r in p.records] + self.unpressured
@@ -370,10 +371,11 @@ def _add_spectrum(b: PressureData, f: np.ndarray, z: np.ndarray, t_start: float,
         b.eis_t_start = min(b.eis_t_start, t_start) if np.isfinite(b.eis_t_start) else t_start
 
 
-def load_session(path: str | Path, displacement_sign: int = 1) -> SessionData:
+def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int = 1) -> SessionData:
     """A session's records grouped by clamp setting, with what they give once loaded (``add_derived``);
-    ``displacement_sign`` -1: every displacement read with the opposite sign (a rig whose laser reads the strip's
-    bend reversed: labrig.fit.polarity)."""
+    ``displacement_sign`` (``current_sign``) -1: every displacement (current) read with the opposite sign (a rig whose
+    laser reads the strip's bend reversed, a potentiostat that counts the other current positive: labrig.fit.polarity).
+    Spectra written as -Z'' (``spectra_convention``) are read as Z."""
     from labrig.store import SessionReader
 
     p = Path(path)
@@ -414,7 +416,7 @@ def load_session(path: str | Path, displacement_sign: int = 1) -> SessionData:
                 continue
             s = r.stream(st, "daq")
             fs_ = r.stream(st, "force") if "force" in streams else {"force_N": np.zeros(0), "t_s": np.zeros(0)}
-            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], s["i_A"], displacement_sign * s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
+            rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], current_sign * s["i_A"], displacement_sign * s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
@@ -456,9 +458,30 @@ def load_session(path: str | Path, displacement_sign: int = 1) -> SessionData:
                      f"arrived: the {held_rows} repeated rows left out")
     if rounded:
         notes.append(f"{rounded} records' time stamps are a uniform clock rounded to a grid: read on that clock's grid")
+    spectra_convention(list(by_p.values()), notes)
     for b in by_p.values():
         add_derived(b, notes)
-    return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose, displacement_sign)
+    return SessionData(str(p), sample, [by_p[k] for k in sorted(by_p)], notes, loose, displacement_sign, current_sign)
+
+
+# the share of a session's spectrum points with a positive imaginary part beyond which the spectra are -Z'': the strip
+# is a passive RC line with constant-phase elements (seed 000, eqs. 5-12), capacitive at every frequency it is
+# measured at (Im Z < 0); a cable's inductance may turn the top few points of a band, never most of the session's
+MINUS_Z_SHARE = 0.8
+
+
+def spectra_convention(buckets: list[PressureData], notes: list[str]) -> bool:
+    """Read spectra exported as -Z'' (the Nyquist plot's axis, a common export) as Z: where more than ``MINUS_Z_SHARE``
+    of all the session's spectrum points have Im > 0, every spectrum is conjugated, with a note. True if so."""
+    zs = [b.eis[1] for b in buckets if b.eis is not None]
+    if not zs or np.mean(np.concatenate(zs).imag > 0) <= MINUS_Z_SHARE:
+        return False
+    for b in buckets:
+        if b.eis is not None:
+            b.eis = (b.eis[0], np.conj(b.eis[1]))
+    notes.append(f"the spectra's imaginary parts are positive at more than {MINUS_Z_SHARE:.0%} of their points, where the strip "
+                 "is capacitive: read as -Z'' (a Nyquist plot's axis) and taken as Z")
+    return True
 
 
 def add_derived(b: PressureData, notes: list[str] | None = None) -> None:

@@ -1,4 +1,4 @@
-"""The displacement's sign, told by the data before anything is fitted.
+"""The displacement's and the current's signs, told by the data before anything is fitted.
 
 The model's displacement follows the drive: a positive step bends the strip the way the laser reads as positive, and
 the stepped sines' FRF has the phase of the strip's own transfer function (seed 000, eqs. 12-31). A lab's rig need not
@@ -13,6 +13,10 @@ geometry: ``seed000.prior_specimens``), line by line, by the cosine of their pha
 no FRF, the first second of every voltage step against the step's sign. A session that reads the way the model does
 gives +1 on both (every cached case of the tuning and held-out sets: docs/storage.md), a reversed one -1, and
 anything in between (|agreement| < ``SIGN_AGREEMENT``) keeps the data as recorded.
+
+The current needs no model: the strip is passive, so the real part of its admittance is positive at every frequency
+(``current_sign``); a potentiostat that counts the cathodic current positive (the American convention against IUPAC's),
+or a shunt wired the other way, reads it negative.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ from labrig.records import RecordKind
 
 SIGN_AGREEMENT = 0.5  # the mean agreement that decides; cached cases read +-0.95 to +-1.00 (docs/storage.md)
 STEP_WINDOW_S = 1.0  # a step's first second: the strip's bend before any back-relaxation turns it
+CHARGE_WINDOW_S = 0.1  # a step's charging current, before a faradaic branch or a leak could outweigh it
 MIN_LINES = 3
 
 
@@ -46,22 +51,32 @@ def line_agreement(sd: SessionData) -> float | None:
     return float(np.mean(cosines)) if len(cosines) >= MIN_LINES else None
 
 
-def step_agreement(sd: SessionData) -> float | None:
-    """Mean over the voltage steps of sign(drive step) x sign(the displacement's mean change over the step's first
-    ``STEP_WINDOW_S`` from its pre-step level); None without a step that has a pre-step baseline."""
+def step_agreement(sd: SessionData, channel: str = "d", window_s: float = STEP_WINDOW_S) -> float | None:
+    """Mean over the voltage steps of sign(drive step) x sign(the ``channel``'s mean change over the step's first
+    ``window_s`` from its pre-step level); None without a step that has a pre-step baseline."""
     signs = []
     for r in sd.all_records():
         if r.kind != RecordKind.STEP:
             continue
         t0 = step_onset(r)
-        pre, early = r.t < t0, (r.t > t0) & (r.t <= t0 + STEP_WINDOW_S)
+        pre, early = r.t < t0, (r.t > t0) & (r.t <= t0 + window_s)
         if pre.sum() < 4 or early.sum() < 4:
             continue
+        x = getattr(r, channel)
         dv = float(np.median(r.v[early]) - np.median(r.v[pre]))
-        dd = float(np.mean(r.d[early]) - np.median(r.d[pre]))
-        if dv and dd:
-            signs.append(np.sign(dv) * np.sign(dd))
+        dx = float(np.mean(x[early]) - np.median(x[pre]))
+        if dv and dx:
+            signs.append(np.sign(dv) * np.sign(dx))
     return float(np.mean(signs)) if signs else None
+
+
+def admittance_agreement(sd: SessionData) -> float | None:
+    """Mean sign of the real part of the DAQ's current admittance over every pressure's lines: the strip is passive
+    (an RC line with constant-phase elements, seed 000 eqs. 5-12), so Re Y > 0 at every frequency; None with fewer
+    than ``MIN_LINES``."""
+    re = [np.sign(lines[1].real) for d in sd.pressures if (lines := d.current_lines()) is not None]
+    re = np.concatenate(re) if re else np.zeros(0)
+    return float(np.mean(re)) if re.size >= MIN_LINES else None
 
 
 def displacement_sign(sd: SessionData) -> tuple[int, float | None, str]:
@@ -70,4 +85,14 @@ def displacement_sign(sd: SessionData) -> tuple[int, float | None, str]:
     a, source = line_agreement(sd), "the FRF's phase against the prior strip's"
     if a is None:
         a, source = step_agreement(sd), "the voltage steps' first second"
+    return (-1 if a is not None and a < -SIGN_AGREEMENT else 1), a, source
+
+
+def current_sign(sd: SessionData) -> tuple[int, float | None, str]:
+    """(+1 or -1, the agreement that decided, what it was read from): -1 only where the current admittance's real
+    part (or, without sines, the charging current in a step's first ``CHARGE_WINDOW_S``) runs against the drive by
+    more than ``SIGN_AGREEMENT``: a potentiostat counting the other current positive, a shunt wired the other way."""
+    a, source = admittance_agreement(sd), "the current admittance's real part"
+    if a is None:
+        a, source = step_agreement(sd, "i", CHARGE_WINDOW_S), "the voltage steps' charging current"
     return (-1 if a is not None and a < -SIGN_AGREEMENT else 1), a, source
