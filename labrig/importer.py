@@ -9,7 +9,8 @@ or CSV line, and the problem.
 Time placement: drift effects (dehydration, clamp relaxation) need the time between records. When the
 CSVs share one clock (each time series starts at or after the end of the one before it, as ``labrig
 export`` writes them) each record starts at its own first ``t_s`` and its stored times count from there,
-exactly as a run stores them. Otherwise (every CSV starting at 0, say) the records are laid back to back in
+exactly as a run stores them; a clock of the time of day that passed midnight in a rest is carried a day on from
+there (``day_unwrapped``). Otherwise (every CSV starting at 0, say) the records are laid back to back in
 manifest order with their times as written. Spectra have no time: they sit where the time series before
 them ended. What a manifest cannot say (a step's edge, a sine's settling cycles) the fitter reads off the
 data (``labrig.estimate.session_data.step_onset``, ``sine_cycles``).
@@ -241,10 +242,36 @@ def _plan(records: list[Record], tables: list[Table]) -> tuple[StepPlan, ...]:
     return tuple(steps)
 
 
+DAY_S = 86400.0
+
+
+def day_unwrapped(spans: list[tuple[float, float] | None]) -> list[tuple[float, float] | None]:
+    """The records' (first, last) ``t_s`` on a clock of the time of day carried past each midnight it crossed: where
+    every stamp lies within one day and each backward step between records is more than half a day (a logger that
+    stamps rows with the time of day, a session run through midnight), a day is added from each such step on. The
+    spans as given otherwise (a clock that restarts per record, or one that is already monotonic)."""
+    timed = [sp for sp in spans if sp is not None]
+    if not timed or min(a for a, _ in timed) < 0.0 or max(b for _, b in timed) >= DAY_S:
+        return spans
+    back = [a[1] - b[0] for a, b in zip(timed, timed[1:]) if b[0] < a[1]]
+    if not back or min(back) <= DAY_S / 2:
+        return spans
+    out, days, last = [], 0.0, None
+    for sp in spans:
+        if sp is not None:
+            if last is not None and sp[0] < last:
+                days += DAY_S
+            last = sp[1]
+            sp = (sp[0] + days, sp[1] + days)
+        out.append(sp)
+    return out
+
+
 def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], bool]:
     """Each record's start time on the session clock, and whether the CSVs' own clock gave them (see the
     module docstring); back to back from 0 otherwise."""
     spans = [None if rec.kind == RecordKind.EIS else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
+    spans = day_unwrapped(spans)
     timed = [sp for sp in spans if sp is not None]
     own = all(b[0] >= a[1] for a, b in zip(timed, timed[1:]))
     starts, cursor = [], timed[0][0] if own and timed else 0.0

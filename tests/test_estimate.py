@@ -328,3 +328,22 @@ def test_an_averaged_period_reads_as_the_record_it_was_averaged_from():
     for a, b in ((one.disp_noise, whole.disp_noise), (one.cur_noise, whole.cur_noise)):
         assert b / 1.5 < a < 1.5 * b
     assert one.noise_dof > 20 and np.isfinite(one.disp_noise)
+
+
+def test_repeated_sines_stored_on_their_own_clocks_drift_on_the_session_clock(tmp_path):
+    """Three identical stepped sines whose CSVs keep clocks of their own (first stamps 300, 0 and 600 s: no one clock,
+    so the import lays them back to back and stores their times as written) losing 3 % of their gain each: the
+    repeats' drift is read at the records' moments on the session clock, from the first to the last record's middle
+    (each record's own first stamp taken off, as for the steps), not at their stamps."""
+    fs, f, dur = 100.0, 2.0, 10.0
+    t = np.arange(int(dur * fs)) / fs
+    rng = np.random.default_rng(5)
+    for k, (first, g) in enumerate(((300.0, 1.0), (0.0, 0.97), (600.0, 0.94))):
+        v = 0.5 * np.sin(2 * np.pi * f * t)
+        d = g * 1e-4 * np.sin(2 * np.pi * f * t - 0.3) + 1e-8 * rng.standard_normal(t.size)
+        _write_csv(tmp_path / f"s{k}.csv", first + t, v, 1e-3 * v, d)
+    (tmp_path / "m.toml").write_text(SPECIMEN + "".join(
+        f'[[record]]\nkind = "stepped_sine"\npressure_kPa = 612\nfrequency_Hz = {f:g}\namplitude_V = 0.5\nfile = "s{k}.csv"\n' for k in range(3)))
+    d = load_session(import_manifest(tmp_path / "m.toml", tmp_path / "imp.h5")).pressures[0].drift["sine/repeats"]
+    assert d.repeats == 3 and d.span_s == pytest.approx(2 * dur, rel=0.02)
+    assert d.relative_change.real == pytest.approx(-0.06, abs=0.01)

@@ -268,3 +268,31 @@ def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path)
     assert any("5 distinct clamp pressures read on the records, grouped into 2 clamp settings" in n for n in sd.notes)
     # seed 001's closest settings (500 ... 1700 kPa, 1300 -> 1700 the nearest) and setpoints stay as they are
     assert clamp_settings([500.0, 900.0, 1300.0, 1700.0, 1300.0]) == {500.0: 500.0, 900.0: 900.0, 1300.0: 1300.0, 1700.0: 1700.0}
+
+
+def test_a_clock_of_the_time_of_day_is_carried_past_midnight(tmp_path):
+    """A logger that stamps rows with the time of day, the session run through midnight during a rest: the records
+    after it read near 0 again. They are carried a day on, so every rest between records is kept as it was measured,
+    and each record's ``t_s`` counts from its start as on one clock; a per-record clock (each CSV from 0) is still laid
+    back to back."""
+    from labrig.importer import day_unwrapped
+    from labrig.store import SessionReader
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    series = ["p612_step.csv", "p612_sine_2Hz.csv", "p3062_step.csv"]
+    t0, rest = 86400.0 - 10.0, 30.0  # midnight falls in the first rest
+    moments = []
+    for name in series:
+        c = csv_columns(ex / name)
+        write_time_series(ex / name, np.round((t0 + c["t_s"]) % 86400.0, 5), c["v_V"], c["i_A"], c["disp_m"])
+        moments.append(t0)
+        t0 += c["t_s"][-1] + rest
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    with SessionReader(tmp_path / "s.h5") as r:
+        steps = [st for st in r.steps() if st.kind != "eis"]
+        starts = np.array([st.t_start for st in steps])
+        np.testing.assert_allclose(starts - starts[0], np.array(moments) - moments[0], atol=1e-4)
+        assert all(r.stream(st, "daq")["t_s"][0] == 0.0 for st in steps)
+    assert day_unwrapped([(0.0, 4.0), (0.0, 4.0)]) == [(0.0, 4.0), (0.0, 4.0)]  # each CSV from 0: no day added
+    assert day_unwrapped([(86000.0, 86390.0), None, (20.0, 60.0)]) == [(86000.0, 86390.0), None, (86420.0, 86460.0)]

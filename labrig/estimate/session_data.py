@@ -616,7 +616,9 @@ def _sine_drift(records: list[TimeRecord]) -> dict[str, DriftEstimate | None]:
     repeats = []
     for recs in (g for g in groups.values() if len(g) > 1):
         whole = [sine_segment_gains(r.t, r.v, r.d, float(r.meta["frequency_Hz"]), sine_skip(r), segments=1) for r in recs]
-        repeats.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm, g, var) for r, (tm, g, var) in zip(recs, whole)])))
+        # each segment's moment on the session clock: from the record's own first stamp, as the steps' (an import
+        # stored as written keeps its CSV's clock in t)
+        repeats.append(tuple(np.concatenate(c) for c in zip(*[(r.t_start + tm - r.t[0], g, var) for r, (tm, g, var) in zip(recs, whole)])))
     return {"sine/within": combine_rates(*(np.array(c) for c in zip(*within))) if within else None,
             "sine/repeats": gain_drift(*_stack(repeats)) if repeats else None}
 
