@@ -87,8 +87,11 @@
 * Fresh26 held-out set (``--set fresh26``, bench/inject_fresh26.py ``fresh26_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 148-150, the paper
   strip 19 mm free, a new data shape (the laser on the strip's other face: every displacement with the opposite sign).
+* Fresh27 held-out set (``--set fresh27``, bench/inject_fresh27.py ``fresh27_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 151-153, the paper
+  strip 18 mm free, a new data shape (rows stamped with the time of day, the session run through midnight).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|fresh26|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|fresh26|fresh27|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -189,7 +192,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh23": "fresh23 held-out set (diagnosed once unseen at 11de4fd; seen since)",
           "fresh24": "fresh24 held-out set (diagnosed once unseen at b4fec67; seen since)",
           "fresh25": "fresh25 held-out set (diagnosed once unseen at d5e0db3; seen since)",
-          "fresh26": "fresh26 held-out set (unseen: no threshold saw it)"}
+          "fresh26": "fresh26 held-out set (diagnosed once unseen at 90b9319; seen since)",
+          "fresh27": "fresh27 held-out set (unseen: no threshold saw it)"}
 
 
 def validation(a, name: str = "validation") -> list:
