@@ -266,6 +266,10 @@ def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path)
     assert [p.pressure_kPa for p in sd.pressures] == [604.9, pytest.approx(3040.25)]
     assert len(sd.pressures[0].records) == 2 and sd.pressures[0].eis is not None and sd.pressures[1].eis is not None
     assert any("5 distinct clamp pressures read on the records, grouped into 2 clamp settings" in n for n in sd.notes)
+    # each record carries its setting (what the diagnosis' features and split group by), its own reading beside
+    for p in sd.pressures:
+        assert all(r.meta["pressure_kPa"] == p.pressure_kPa for r in p.records)
+    assert [r.meta.get("pressure_read_kPa") for r in sd.pressures[1].records] == [3049.5]  # the step (the spectrum read 3031)
     # seed 001's closest settings (500 ... 1700 kPa, 1300 -> 1700 the nearest) and setpoints stay as they are
     assert clamp_settings([500.0, 900.0, 1300.0, 1700.0, 1300.0]) == {500.0: 500.0, 900.0: 900.0, 1300.0: 1300.0, 1700.0: 1700.0}
 

@@ -417,6 +417,10 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
             s = r.stream(st, "daq")
             fs_ = r.stream(st, "force") if "force" in streams else {"force_N": np.zeros(0), "t_s": np.zeros(0)}
             rec = TimeRecord(st.name, st.kind, dict(st.metadata), s["t_s"], s["v_V"], current_sign * s["i_A"], displacement_sign * s["disp_m"], fs_["force_N"], st.t_start, fs_["t_s"])
+            if bucket is not None and bucket.pressure_kPa != float(pk):
+                # the record belongs to its setting (what every reader groups by: the features, the split, the fits),
+                # the load cell's reading on it kept beside
+                rec.meta["pressure_read_kPa"], rec.meta["pressure_kPa"] = float(pk), bucket.pressure_kPa
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
