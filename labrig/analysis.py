@@ -28,17 +28,14 @@ def load_and_fit(path: str | Path, what: str = "fit") -> tuple[Any, Any]:
     sd = load_session(path)
     if not sd.pressures and not sd.unpressured:
         raise BadInput(f"{path}: no finished records to {what}")
-    (d_sign, d_agree, d_source), (i_sign, i_agree, i_source) = displacement_sign(sd), current_sign(sd)
-    if d_sign < 0 or i_sign < 0:  # the rig's own sign conventions (labrig.fit.polarity): read with the model's
-        sd = load_session(path, displacement_sign=d_sign, current_sign=i_sign)
-        if d_sign < 0:
-            sd.notes.append(f"the displacement runs against the drive ({d_source}: agreement {d_agree:+.2f}): a laser facing "
-                            "the strip's other face, a strip clamped the other way round or an inverted sensor output; "
-                            "every displacement read with the opposite sign")
-        if i_sign < 0:
-            sd.notes.append(f"the current runs against the drive ({i_source}: agreement {i_agree:+.2f}), where the strip "
-                            "is passive: a potentiostat counting the other current positive or a shunt wired the other "
-                            "way; every current read with the opposite sign")
+    read = {"displacement": (displacement_sign(sd), ": a laser facing the strip's other face, a strip clamped the other "
+                                                   "way round or an inverted sensor output"),
+            "current": (current_sign(sd), ", where the strip is passive: a potentiostat counting the other current "
+                                          "positive or a shunt wired the other way")}
+    if any(sign < 0 for (sign, _, _), _ in read.values()):  # the rig's own sign conventions (labrig.fit.polarity)
+        sd = load_session(path, displacement_sign=read["displacement"][0][0], current_sign=read["current"][0][0])
+        sd.notes += [f"the {name} runs against the drive ({source}: agreement {agree:+.2f}){why}; every {name} read "
+                     "with the opposite sign" for name, ((sign, agree, source), why) in read.items() if sign < 0]
     return sd, fit_seed000(sd)
 
 

@@ -809,8 +809,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     # the baseline is one strip on both halves (the seed-000 fit of every record): a misfit confined to the fitted
     # half's settings (an episode the re-clampings bound: fresh26's lodged flake, frf_d 877 x its accuracy there and
     # the held-out half at its floor) is structure all the same, though no split of the session can score a form on it
-    fit_accuracy = attainable_accuracy(ctx_fit)
-    fit_structure = {} if same or structure else \
+    fit_accuracy = None if same or structure else attainable_accuracy(ctx_fit)
+    fit_structure = {} if fit_accuracy is None else \
         {k: v for k, v in structured(block_rms(b_fit), fit_accuracy).items() if v > FIT_HALF_MARGIN}
     if rival is not None:
         verdict, cause = "unexplained", None

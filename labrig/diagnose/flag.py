@@ -23,7 +23,7 @@ from labrig.diagnose.catalogue import Context, _drive, _play, baseline
 
 # the largest x_r / x_f: a flag whose return threshold is within a fifth of its forward one has hardly a loop, and a
 # memoryless knee in the reading (a laser's linearisation table run out, a stop) fits it as well: with it free to 1,
-# fresh26's table knee (a large deflection) and fresh18's dead pixel (outside the catalogue) read as hysteresis at
+# fresh26's table knee (a large deflection) and fresh21's dead pixel (outside the catalogue) read as hysteresis at
 # 0.986 and 1.000, while the memories the flag was right on read 0.00-0.51 (seen sets; docs/diagnosis.md)
 REVERSE_SHARE_MAX = 0.8
 _N = 64  # points per cycle of the sines' periodic state

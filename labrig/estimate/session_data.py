@@ -474,18 +474,17 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
 MINUS_Z_SHARE = 0.8
 
 
-def spectra_convention(buckets: list[PressureData], notes: list[str]) -> bool:
+def spectra_convention(buckets: list[PressureData], notes: list[str]) -> None:
     """Read spectra exported as -Z'' (the Nyquist plot's axis, a common export) as Z: where more than ``MINUS_Z_SHARE``
-    of all the session's spectrum points have Im > 0, every spectrum is conjugated, with a note. True if so."""
+    of all the session's spectrum points have Im > 0, every spectrum is conjugated, with a note."""
     zs = [b.eis[1] for b in buckets if b.eis is not None]
     if not zs or np.mean(np.concatenate(zs).imag > 0) <= MINUS_Z_SHARE:
-        return False
+        return
     for b in buckets:
         if b.eis is not None:
             b.eis = (b.eis[0], np.conj(b.eis[1]))
     notes.append(f"the spectra's imaginary parts are positive at more than {MINUS_Z_SHARE:.0%} of their points, where the strip "
                  "is capacitive: read as -Z'' (a Nyquist plot's axis) and taken as Z")
-    return True
 
 
 def add_derived(b: PressureData, notes: list[str] | None = None) -> None:

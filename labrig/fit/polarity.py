@@ -24,10 +24,11 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.estimate.session_data import SessionData, step_onset
+from labrig.fit.seed000 import prior_specimens
 from labrig.physics import transfer
 from labrig.records import RecordKind
 
-SIGN_AGREEMENT = 0.5  # the mean agreement that decides; cached cases read +-0.95 to +-1.00 (docs/storage.md)
+SIGN_AGREEMENT = 0.5  # the mean agreement that decides; cached cases read +0.59 to +1.00, or -1.00 reversed (docs/storage.md)
 STEP_WINDOW_S = 1.0  # a step's first second: the strip's bend before any back-relaxation turns it
 CHARGE_WINDOW_S = 0.1  # a step's charging current, before a faradaic branch or a leak could outweigh it
 MIN_LINES = 3
@@ -36,8 +37,6 @@ MIN_LINES = 3
 def line_agreement(sd: SessionData) -> float | None:
     """Mean cosine of the phase difference between the measured displacement FRF and the prior strip's, over every
     pressure's lines; None with fewer than ``MIN_LINES``."""
-    from labrig.fit.seed000 import prior_specimens
-
     priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
     cosines = []
     for d in sd.pressures:
@@ -79,20 +78,21 @@ def admittance_agreement(sd: SessionData) -> float | None:
     return float(np.mean(re)) if re.size >= MIN_LINES else None
 
 
-def displacement_sign(sd: SessionData) -> tuple[int, float | None, str]:
-    """(+1 or -1, the agreement that decided, what it was read from): -1 only where the FRF's lines (or, without
-    them, the steps) run against the model by more than ``SIGN_AGREEMENT``."""
-    a, source = line_agreement(sd), "the FRF's phase against the prior strip's"
-    if a is None:
-        a, source = step_agreement(sd), "the voltage steps' first second"
+def _decided(readings: list[tuple[float | None, str]]) -> tuple[int, float | None, str]:
+    """(+1 or -1, the agreement that decided, what it was read from) from the first reading that exists: -1 only where
+    it runs against the model by more than ``SIGN_AGREEMENT``."""
+    a, source = next(((a, src) for a, src in readings if a is not None), (None, readings[-1][1]))
     return (-1 if a is not None and a < -SIGN_AGREEMENT else 1), a, source
+
+
+def displacement_sign(sd: SessionData) -> tuple[int, float | None, str]:
+    """``_decided`` on the FRF's lines, or, without them, the steps."""
+    return _decided([(line_agreement(sd), "the FRF's phase against the prior strip's"),
+                     (step_agreement(sd), "the voltage steps' first second")])
 
 
 def current_sign(sd: SessionData) -> tuple[int, float | None, str]:
-    """(+1 or -1, the agreement that decided, what it was read from): -1 only where the current admittance's real
-    part (or, without sines, the charging current in a step's first ``CHARGE_WINDOW_S``) runs against the drive by
-    more than ``SIGN_AGREEMENT``: a potentiostat counting the other current positive, a shunt wired the other way."""
-    a, source = admittance_agreement(sd), "the current admittance's real part"
-    if a is None:
-        a, source = step_agreement(sd, "i", CHARGE_WINDOW_S), "the voltage steps' charging current"
-    return (-1 if a is not None and a < -SIGN_AGREEMENT else 1), a, source
+    """``_decided`` on the current admittance's real part, or, without sines, the charging current in a step's first
+    ``CHARGE_WINDOW_S``: a potentiostat counting the other current positive, a shunt wired the other way."""
+    return _decided([(admittance_agreement(sd), "the current admittance's real part"),
+                     (step_agreement(sd, "i", CHARGE_WINDOW_S), "the voltage steps' charging current")])
