@@ -13,7 +13,8 @@ carrying a transient where z > ``ARMING_Z``, the session when ``MIN_RECORDS`` do
 ``ARMING_Z`` = 6, the bursts' convention (artefacts.BURST_Z). Tuning set's ten clean sessions: the largest record
 3.4, the second largest of a session at most 1.3. The clean sessions and effects of fresh12-15 (102 sessions, every
 data shape, never used to set it): ratios at most 1.23 on the session's second record. Fresh15's relay at arming
-(seen when this was written): 3.9 and 7.4.
+(seen when this was written): 3.9 and 7.4. A rest with rows filled in (``TimeRecord.filled``: a logger that kept only
+the rows it needed, a buffer's lost packets) is not read: its interpolated samples have no scatter to compare with.
 """
 
 from __future__ import annotations
@@ -37,6 +38,8 @@ def record_arming(r: TimeRecord) -> dict[str, float] | None:
     if r.kind != "step" or r.t.size < 16:
         return None
     rest = r.t < step_onset(r) - EDGE_GUARD_S
+    if r.filled.size and np.any(r.filled[rest]):
+        return None  # a rest partly interpolated (a logger that thinned it): its scatter is not the readings'
     n = max(int(round(WINDOW_S * r.fs)), MIN_SAMPLES)
     out = {}
     for ch, attr in CHANNELS.items():

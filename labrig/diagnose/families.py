@@ -80,6 +80,18 @@ def lowpass_tf(s, tau: float, order: float):
 lowpass = _relax(lambda s, th: lowpass_tf(s, *th))
 
 
+def band_delay_tf(s, delay: float, f_share: float):
+    """1 + (exp(-s L) - 1)/(1 + s/w): a reading summed from two paths, the slow share of the bend (below f_share, a
+    first-order split) read late by L and the fast share at once (a head on a tracking stage whose position is read
+    late, a coarse-fine sensor pair, a servo's slow loop logged over a slower bus). Gain 1 at both ends; the phase lag
+    of the delay below f_share, none far above it. f_share -> infinity: the pure delay."""
+    s = np.asarray(s, complex)
+    return 1.0 + (np.exp(-s * delay) - 1.0) / (1.0 + s / (2 * np.pi * f_share))
+
+
+band_delay = _relax(lambda s, th: band_delay_tf(s, *th))
+
+
 # ------------------------------------------------------------------------------------------ faradaic branches
 
 
@@ -523,6 +535,9 @@ FAMILIES["time_delay"] += [
     _form("time_delay", "lowpass", ("tau_s", "order"), (0.005, 2.0), (0.0, 1.0), (0.1, 30.0), lowpass,
           "the displacement read through (1 + s tau/n)^-n: a sensor's averaging, servo or anti-alias filter of a few poles "
           "(n = 1: the lag; n large: the delay)", refit_mechanics=True),
+    _form("time_delay", "band", ("delay_s", "f_share_Hz"), (0.02, 1.0), (0.0, 0.02), (0.3, 50.0), band_delay,
+          "the slow share of the reading (below f_share) late by L, the fast share at once: 1 + (exp(-s L) - 1)/(1 + s/w) "
+          "(a tracking stage's or a coarse-fine pair's slow path read late)", refit_mechanics=True),
 ]
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,

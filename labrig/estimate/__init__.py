@@ -65,12 +65,57 @@ def _design(t: np.ndarray, f: float, harmonics: int, trend: int) -> np.ndarray:
     return np.stack(cols, axis=1)
 
 
+GAP = 1.5  # a spacing this many times the median is samples lost (a jittered clock stays well under it)
+
+
+def thinned(t: np.ndarray) -> bool:
+    """Whether a record's stamps have gaps: rows left out of a uniform clock's (lost packets, a logger or historian
+    that keeps only the rows it needs, as swinging-door compression or a deadband does), so that a count of samples
+    is not a span of time. Records without gaps keep the count arithmetic below (unchanged, to the sample)."""
+    d = np.diff(np.asarray(t, float))
+    return bool(d.size and np.max(d) > GAP * np.median(d))
+
+
+def sample_spacing(t: np.ndarray) -> float:
+    """The sampling clock's spacing under a record's stamps: their median spacing, or for thinned stamps (``thinned``)
+    that are a subset of one clock's rows, that clock's: the smallest spacing, of which every spacing is a whole
+    multiple (a historian that keeps a quarter of a slow record's rows has a median spacing of several samples)."""
+    d = np.diff(np.asarray(t, float))
+    med = float(np.median(d)) if d.size else 1.0
+    if not thinned(t):
+        return med
+    d0 = float(np.min(d[d > 0]))
+    k = d / d0
+    return d0 if float(np.max(np.abs(k - np.round(k)))) < 0.1 else med
+
+
 def _whole_cycles(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
+    if thinned(t):  # a count of samples is no span of time: the cycles are cut by the stamps
+        dt = sample_spacing(t)
+        start = int(np.searchsorted(t, t[0] + skip_cycles / f - 0.5 * dt))
+        if start >= t.size:
+            return slice(t.size, t.size)
+        n_cyc = int(np.floor((t[-1] - t[start] + dt) * f + 1e-9)) if cycles is None else int(cycles)
+        stop = int(np.searchsorted(t, t[start] + max(n_cyc, 0) / f - 0.5 * dt))
+        return slice(start, min(stop, t.size))
     fs = 1.0 / np.median(np.diff(t))
     start = min(int(round(skip_cycles / f * fs)), t.size)
     n_cyc = int(np.floor((t.size - start) * f / fs)) if cycles is None else int(cycles)
     n = int(round(max(n_cyc, 0) / f * fs))  # a record shorter than its settling cycles has none left: empty
     return slice(start, min(start + n, t.size))
+
+
+def cycle_slices(t: np.ndarray, f: float) -> list[slice]:
+    """The record's successive whole cycles at ``f``: runs of round(fs/f) samples, or for thinned stamps the samples
+    within each cycle's span of time (those with too few samples for a cycle's fit left out)."""
+    t = np.asarray(t, float)
+    dt = sample_spacing(t)
+    n1 = max(int(round(1.0 / (f * dt))), 1)
+    if not thinned(t):
+        return [slice(c * n1, (c + 1) * n1) for c in range(max(int(t.size // n1), 1))]
+    nc = max(int(np.floor((t[-1] - t[0] + dt) / (n1 * dt) + 1e-9)), 1)
+    edges = np.searchsorted(t, t[0] + np.arange(nc + 1) * n1 * dt - 0.5 * dt)
+    return [slice(int(a), int(b)) for a, b in zip(edges[:-1], edges[1:]) if b - a >= 8]
 
 
 def _demod_span(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
@@ -83,6 +128,8 @@ def _demod_span(t: np.ndarray, f: float, skip_cycles: float, cycles: float | Non
         return slice(0, t.size)
     sl = _whole_cycles(t, f, skip_cycles, cycles)
     if sl.stop - sl.start < 16 or (t[sl.stop - 1] - t[sl.start]) * f < 0.9:
+        if thinned(t):  # the last whole cycles by their span of time
+            return slice(int(np.searchsorted(t, t[-1] - math.floor(span + 0.01) / f + 0.5 * sample_spacing(t))), t.size)
         n = int(round(math.floor(span + 0.01) / f / float(np.median(np.diff(t)))))  # the last whole cycles: least transient
         sl = slice(max(t.size - n, 0), t.size)
     return sl
@@ -112,10 +159,7 @@ def sine_estimate(t, v, i, d, f: float, settle_cycles: float = 0.0, cycles: floa
     tt, vv, ii, dd = (np.asarray(a)[sl] for a in (t, v, i, d))
     trend = trend_degree(tt, f, harmonics)
     per_cycle_d, per_cycle_i, per_cycle_var, per_cycle_amp = [], [], [], []
-    fs = 1.0 / np.median(np.diff(tt))
-    n1 = int(round(fs / f))
-    for c in range(max(int(tt.size // n1), 1)):
-        s = slice(c * n1, (c + 1) * n1)
+    for s in cycle_slices(tt, f):
         vd = demodulate(tt[s], vv[s], f)[0]
         dc = demodulate(tt[s], dd[s], f)[0]
         per_cycle_d.append(dc / vd)
@@ -173,7 +217,7 @@ def _mains_columns(t: np.ndarray, f: float, harmonics: int) -> np.ndarray:
     span = float(t[-1] - t[0]) if t.size > 1 else 0.0
     if span <= 0:
         return np.zeros((t.size, 0))
-    fs = 1.0 / float(np.median(np.diff(t)))
+    fs = 1.0 / sample_spacing(t)
     lines: list[float] = []
     for base in MAINS_HZ:
         for m in range(1, max(MAINS_ORDERS, int(fs / 2 / base)) + 1):

@@ -21,6 +21,8 @@ import numpy as np
 from labrig.errors import BadInput
 from labrig.records import HOLD_KINDS, SINE_KINDS, RecordKind
 from labrig.estimate import (
+    GAP,
+    sample_spacing,
     BlaEstimate,
     DriftEstimate,
     combine_rates,
@@ -54,7 +56,7 @@ class TimeRecord:
 
     @property
     def fs(self) -> float:
-        return float(1.0 / np.median(np.diff(self.t)))
+        return float(1.0 / sample_spacing(self.t))
 
     @property
     def force_trend(self) -> ForceTrend:
@@ -204,9 +206,6 @@ def _finite(*arrays: np.ndarray) -> bool:
     return all(a.size > 0 and np.all(np.isfinite(a)) for a in arrays)
 
 
-GAP = 1.5  # a spacing this many times the median is samples lost (a jittered clock stays well under it)
-
-
 def regular_grid(t: np.ndarray, *cols: np.ndarray) -> tuple[int, int, np.ndarray, list[np.ndarray]]:
     """(samples filled, gaps, t, cols) on a uniform grid at the median spacing: a DAQ whose buffer overran loses whole
     packets while the rows kept carry their true time stamps. Every estimate downstream (the step simulated at the
@@ -214,7 +213,7 @@ def regular_grid(t: np.ndarray, *cols: np.ndarray) -> tuple[int, int, np.ndarray
     linearly (the samples are gone: nothing better is known). Records without gaps come back as they were."""
     if t.size < 3:
         return 0, 0, t, list(cols)
-    dt = float(np.median(np.diff(t)))
+    dt = sample_spacing(t)
     gaps = int(np.sum(np.diff(t) > GAP * dt))
     if dt <= 0 or not gaps:
         return 0, 0, t, list(cols)
