@@ -210,6 +210,33 @@ def test_a_drying_from_an_onset_and_one_set_anew_at_each_clamp_setting():
     np.testing.assert_allclose(build, 1.5 * t / 400.0 - 0.5, atol=1e-3)
 
 
+def test_a_clamp_shaken_loose_loses_force_in_the_shaking_records_and_holds_through_the_quiet_ones():
+    """The dose is the tip acceleration's excess over the slip threshold, a record's cycles' worth, counted from each
+    setting to the record's middle: nothing in the slow records, the resonant record's share halfway through it, held
+    after it; a new setting starts at none. The force follows 1 - e^-D/D0, with the pads' log creep beside."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose import families, slow_forms
+
+    def sine(p, t, f, amp_m):
+        return SimpleNamespace(pressure_kPa=p, t_start=t, f=f, est=SimpleNamespace(displacement=np.array([amp_m + 0j]), noise_dof=18))
+
+    # acceleration (2 pi f)^2 |d|: 0.1 Hz and 0.5 Hz quiet, 3 Hz (resonant) the session's largest, 20 Hz small
+    sines = [sine(500.0, 0.0, 0.1, 2e-3), sine(500.0, 100.0, 3.0, 1e-3), sine(500.0, 200.0, 0.5, 1e-3), sine(500.0, 300.0, 20.0, 1e-6),
+             sine(900.0, 400.0, 0.1, 2e-3), sine(900.0, 500.0, 3.0, 5e-4)]
+    ctx = SimpleNamespace(sines=sines)
+    dose = slow_forms.shaking_dose(ctx, 0.3)
+    big, half = 0.7 * 10, 0.2 * 10  # excess x 10 cycles: the 3 Hz records (the second at half the acceleration)
+    np.testing.assert_allclose(dose, np.array([0, big / 2, big, big, 0, half / 2]) / (big + half))
+    np.testing.assert_allclose(slow_forms.shaking_dose(ctx, 0.95), [0, 0.5, 1, 1, 0, 0])  # a firmer thread: the largest alone
+    ext = next(e for e in families.FAMILIES["clamp_relaxation"] if e.form == "shaken_loose")
+    assert len(ext.params) == len(ext.x0) == len(ext.lo) == len(ext.hi)
+    x = -np.expm1(-dose / 0.2)
+    assert x[0] == 0 and x[2] == x[3] and x[2] > x[1] > 0 and x[4] == 0  # held through the quiet records, anew at 900 kPa
+
+
 def test_a_displacement_on_a_clock_of_its_own_is_told_from_one_on_the_drives():
     """The per-cycle phase of the displacement drifts by 2 pi eps a cycle when its samples carry times of a clock
     (1 + eps) off the drive's (a sensor logging on its own oscillator); on the drive's clock it does not drift, even

@@ -52,3 +52,23 @@ def test_a_record_without_rest_before_its_edge_is_not_read():
     r = _step(0)
     late = TimeRecord(r.name, "step", r.meta, r.t[400:], r.v[400:], r.i[400:], r.d[400:])  # 0.2 s of rest
     assert record_arming(late) is None and record_arming(TimeRecord("s", "stepped_sine", {}, r.t, r.v, r.i, r.d)) is None
+
+
+def test_a_rest_a_logger_thinned_is_not_read_as_a_quiet_one():
+    """A logger that kept a quarter of the rest's rows, read back on the clock's grid (session_data.regular_grid):
+    the rows filled in are a line between two readings, with no scatter, and a first window that kept its rows
+    would read as a ring over them (z far above the limit). Such a rest is not read; the same rest kept whole is."""
+    from labrig.estimate.session_data import filled_mask, held, regular_grid
+
+    whole = _step(3)
+    rest = whole.t < 1.0
+    keep = ~rest | (np.arange(whole.t.size) % 4 == 0) | (whole.t < 0.12)  # the first 0.12 s kept whole
+    t_read = whole.t[keep]
+    _, _, grid, (i, d) = regular_grid(t_read, whole.i[keep], whole.d[keep])
+    thin = TimeRecord(whole.name, "step", dict(whole.meta), grid, held(t_read, whole.v[keep], grid), i, d,
+                      filled=filled_mask(t_read, grid))
+    assert thin.filled.sum() > 300 and np.allclose(grid, whole.t, rtol=0, atol=1e-9)
+    assert record_arming(thin) is None
+    assert abs(record_arming(whole)["displacement"]) < ARMING_Z
+    thin.filled = np.zeros(0, bool)  # read as if measured: the interpolated rest looks far quieter than its start
+    assert record_arming(thin)["displacement"] > ARMING_Z

@@ -8,7 +8,7 @@ import pytest
 
 from labrig.diagnose.arc import curled_arc, drifting_arc
 from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
-from labrig.diagnose.families import _nearest, lowpass, lowpass_tf
+from labrig.diagnose.families import _nearest, band_delay, band_delay_tf, lowpass, lowpass_tf
 from labrig.physics import presets, timeresp
 
 PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)
@@ -52,6 +52,34 @@ def test_the_lowpass_spans_the_lag_and_the_delay_and_is_causal():
     f = np.array([sn.f for sn in ctx.sines])
     np.testing.assert_allclose(p.Hd / ctx.Hd, lowpass_tf(2j * np.pi * f, tau, 2.5), rtol=1e-12)
     np.testing.assert_allclose(lowpass(np.array([0.0, 2.5]), ctx).Hd, ctx.Hd)
+
+
+def test_the_band_delay_is_late_below_its_share_and_on_time_above():
+    """1 + (exp(-s L) - 1)/(1 + s/w): the slow share late by L (phase -w L at low frequency), the fast share on time
+    (gain and phase 1 far above f_share), the pure delay as f_share grows; a step through it rises at once by the fast
+    share and gets the slow share's L late."""
+    L, fsh = 0.05, 1.0
+    lo, hi = 2j * np.pi * 0.01, 2j * np.pi * 500.0
+    assert np.angle(band_delay_tf(lo, L, fsh)) == pytest.approx(-0.01 * 2 * np.pi * L, rel=0.02)
+    assert abs(band_delay_tf(hi, L, fsh) - 1.0) < 0.01
+    s = 2j * np.pi * np.array([0.1, 1.0, 5.0])
+    np.testing.assert_allclose(band_delay_tf(s, L, 1e7), np.exp(-s * L), atol=1e-5)
+    mid = band_delay_tf(2j * np.pi * fsh, L, fsh)
+    assert abs(mid) != pytest.approx(1.0, abs=0.01)  # between the ends the two shares beat: not an all-pass
+    fs = 2000.0
+    x = np.r_[np.zeros(200), np.ones(3800)]
+    y = timeresp.simulate(lambda z: band_delay_tf(z, L, fsh), x, fs)
+    assert np.max(np.abs(y[:195])) < 1e-4  # nothing before the edge
+    # at once the whole step (the fast path's), falling as the slow share takes it over, which arrives L late: at L
+    # what is left is the fast path's exp(-w L), then it rises to the step's height
+    assert y[202] > 0.95 and y[200 + 100] == pytest.approx(np.exp(-2 * np.pi * fsh * L), abs=0.02)
+    assert y[-1] == pytest.approx(1.0, abs=1e-3)
+
+    ctx = _context()
+    p = band_delay(np.array([L, fsh]), ctx)
+    f = np.array([sn.f for sn in ctx.sines])
+    np.testing.assert_allclose(p.Hd / ctx.Hd, band_delay_tf(2j * np.pi * f, L, fsh), rtol=1e-12)
+    np.testing.assert_allclose(band_delay(np.array([0.0, fsh]), ctx).Hd, ctx.Hd)
 
 
 def test_the_drifting_curl_is_the_curled_arc_read_at_each_records_moment():

@@ -347,3 +347,34 @@ def test_repeated_sines_stored_on_their_own_clocks_drift_on_the_session_clock(tm
     d = load_session(import_manifest(tmp_path / "m.toml", tmp_path / "imp.h5")).pressures[0].drift["sine/repeats"]
     assert d.repeats == 3 and d.span_s == pytest.approx(2 * dur, rel=0.02)
     assert d.relative_change.real == pytest.approx(-0.06, abs=0.01)
+
+
+def test_a_record_a_logger_thinned_is_cut_into_cycles_by_its_stamps():
+    """A logger that keeps a row only when a column moved past its deadband (a historian's swinging door does the
+    like) leaves 38 % of a 0.5 Hz record's rows, each with its own stamp: a count of samples is no span of time there.
+    The settling cycle is skipped and the whole cycles demodulated by their stamps (the span, the cycles counted and
+    so the noise's degrees of freedom as on the record unthinned), on the clock's own spacing (the smallest, of
+    which every spacing is a multiple; the median is several samples)."""
+    from labrig.estimate import _whole_cycles, sample_spacing, sine_estimate, thinned
+
+    rng = np.random.default_rng(5)
+    fs, f, cycles = 1000.0, 0.5, 10
+    t = np.arange(int(cycles * fs / f)) / fs
+    v = 0.5 * np.sin(2 * np.pi * f * t)
+    d = 2e-4 * np.sin(2 * np.pi * f * t - 0.4) + 3e-7 * rng.standard_normal(t.size)
+    i = 4e-3 * np.sin(2 * np.pi * f * t + 1.2) + 2e-5 * rng.standard_normal(t.size)
+    keep, last = np.zeros(t.size, bool), 0
+    keep[0] = keep[-1] = True
+    for k in range(1, t.size):
+        if abs(d[k] - d[last]) > 1.8e-6 or abs(i[k] - i[last]) > 1.2e-4 or abs(v[k] - v[last]) > 2e-3:
+            keep[k], last = True, k
+    tk = t[keep]
+    assert 0.3 < keep.mean() < 0.5 and thinned(tk) and not thinned(t)
+    assert np.median(np.diff(tk)) > 1.5 / fs and sample_spacing(tk) == pytest.approx(1 / fs)
+    whole, part = _whole_cycles(t, f, 1.0, None), _whole_cycles(tk, f, 1.0, None)
+    assert tk[part.start] == pytest.approx(t[whole.start], abs=2 / fs)
+    assert tk[part.stop - 1] == pytest.approx(t[whole.stop - 1], abs=2 / fs)
+    w, th = sine_estimate(t, v, i, d, f, 1.0), sine_estimate(tk, v[keep], i[keep], d[keep], f, 1.0)
+    assert th.noise_dof == w.noise_dof == 2 * (8 - 1)
+    assert abs(th.H_disp - w.H_disp) < 5 * th.disp_noise and abs(th.H_cur - w.H_cur) < 5 * th.cur_noise
+    assert w.disp_noise < th.disp_noise < 2 * w.disp_noise  # fewer rows: a little noisier, never quieter

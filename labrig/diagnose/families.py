@@ -462,6 +462,11 @@ FAMILIES["clamp_relaxation"] += [
           (1.0, 1e5, 10.0, 10.0, 8.0), slow.norton,
           "power-law (Norton) creep, sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)), tau_p = tau (p/p_top)^(1 - n): the high "
           "pressures relax most and first; K_t bar and gain follow it"),
+    _form("clamp_relaxation", "shaken_loose", ("force_loss", "dose_share", "slip_threshold", "creep_share", "creep_tau_s",
+                                               "kt_exponent", "gain_exponent"),
+          (0.05, 0.3, 0.3, 0.0, 30.0, 1.0, 0.0), (-0.2, 0.01, 0.0, -0.1, 0.5, -10.0, -10.0), (0.6, 10.0, 0.95, 0.2, 1e4, 10.0, 10.0),
+          slow.shaken_loose, "a screw clamp loosened by the records that shake it, F = F0 (1 - r (1 - e^-D/D0) - r_c ln(1 + t/tau_c)), "
+          "D the tip acceleration's dose past a slip threshold since the setting (Junker), beside the pads' creep; K_t bar and gain follow it"),
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "flag_output", ("weight", "threshold_um", "reverse_share", "travel_um"), (0.05, 2000.0, 0.5, 5000.0),

@@ -1,7 +1,7 @@
 """The slow effects' forms: drying over the session (dehydration) and the clamp's force creeping (clamp relaxation).
 
 Each is a shape in time, the session's clock or the charge passed for drying, the time since a pressure's first
-record for the clamp; ``families.FAMILIES`` registers them as forms of their effect.
+record for the clamp (or the shaking its records gave it); ``families.FAMILIES`` registers them as forms of their effect.
 """
 
 from __future__ import annotations
@@ -129,6 +129,36 @@ def two_arm_creep(x, sh):
     slower (a polymer's two relaxation processes: chain slip, then the bulk's viscous flow)."""
     ratio, w = sh
     return w * -np.expm1(-x) + (1.0 - w) * -np.expm1(-x / ratio)
+
+
+def shaking_dose(ctx: Context, threshold: float) -> np.ndarray:
+    """Per sine: the shaking its clamp took since its pressure's first record, to the record's middle, as a share of the
+    session's. A record shakes the jaw by the strip's tip acceleration, (2 pi f)^2 |d| from its measured displacement,
+    and a thread slips past ``threshold`` of the session's largest (Junker's transverse loosening): each cycle above
+    it doses (a/a_max - threshold), a record its cycles' worth."""
+    acc = np.array([(2 * np.pi * s.f) ** 2 * abs(s.est.displacement[0]) if s.est.displacement.size else 0.0 for s in ctx.sines])
+    top = float(np.max(acc)) if acc.size and np.max(acc) > 0 else 1.0
+    cycles = np.array([max(s.est.noise_dof / 2 + 1, 1.0) for s in ctx.sines])
+    dose = np.clip(acc / top - threshold, 0.0, None) * cycles
+    out, run = np.zeros(len(ctx.sines)), {}
+    for k in sorted(range(len(ctx.sines)), key=lambda j: ctx.sines[j].t_start):
+        q = ctx.sines[k].pressure_kPa
+        out[k] = run.get(q, 0.0) + 0.5 * dose[k]
+        run[q] = run.get(q, 0.0) + dose[k]
+    total = float(np.sum(dose))
+    return out / total if total > 0 else out
+
+
+def shaken_loose(th, ctx: Context):
+    """A screw clamp loosened by the records that shake it (a bolted joint's self-loosening under transverse vibration):
+    the force falls with the shaking dose since each setting (``shaking_dose``), F = F0 (1 - r (1 - e^-D/D0)), and holds
+    through quiet records and rests, beside the pads' own creep with log time, r_c ln(1 + t/tau_c) (the loosening's
+    steps sit on it); K_t bar and the gain follow it."""
+    loss, d0, threshold, r_c, tau_c, b_kt, b_gain = th
+    p = baseline(ctx)
+    p.force_rel[:] = -loss * -np.expm1(-shaking_dose(ctx, threshold) / d0) - r_c * np.log1p(creep_since_first_record(ctx) / tau_c)
+    follow_force(p, ctx, b_kt, b_gain)
+    return p
 
 
 def norton(th, ctx: Context):
