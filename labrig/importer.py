@@ -10,9 +10,10 @@ Time placement: drift effects (dehydration, clamp relaxation) need the time betw
 CSVs share one clock (each time series starts at or after the end of the one before it, as ``labrig
 export`` writes them) each record starts at its own first ``t_s`` and its stored times count from there,
 exactly as a run stores them; a clock of the time of day that passed midnight in a rest is carried a day on from
-there (``day_unwrapped``). Otherwise (every CSV starting at 0, say) the records are laid back to back in
-manifest order with their times as written. Spectra have no time: they sit where the time series before
-them ended. What a manifest cannot say (a step's edge, a sine's settling cycles) the fitter reads off the
+there (``day_unwrapped``). A record that starts before the one before it ended is on a clock of its own (a logging
+program restarted at each clamp setting; every CSV from 0): each run of records on one clock keeps its times and
+rests, the runs laid back to back in manifest order (``placement``), every record's stored times from its own
+start. Spectra have no time: they sit where the time series before them ended. What a manifest cannot say (a step's edge, a sine's settling cycles) the fitter reads off the
 data (``labrig.estimate.session_data.step_onset``, ``sine_cycles``).
 """
 
@@ -267,19 +268,25 @@ def day_unwrapped(spans: list[tuple[float, float] | None]) -> list[tuple[float, 
     return out
 
 
-def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], bool]:
-    """Each record's start time on the session clock, and whether the CSVs' own clock gave them (see the
-    module docstring); back to back from 0 otherwise."""
+def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], int]:
+    """Each record's start time on the session clock, and the number of clocks the CSVs ran on (see the module
+    docstring). A record that starts before the one before it ended starts a new clock (a logging program restarted
+    at each clamp setting, a CSV per record from 0): the records of one clock keep its times and the rests between
+    them, and each clock's run of records follows the one before back to back."""
     spans = [None if rec.kind == RecordKind.EIS else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
     spans = day_unwrapped(spans)
     timed = [sp for sp in spans if sp is not None]
-    own = all(b[0] >= a[1] for a, b in zip(timed, timed[1:]))
-    starts, cursor = [], timed[0][0] if own and timed else 0.0
+    starts, clocks = [], 0
+    cursor = max(timed[0][0], 0.0) if timed else 0.0
+    shift, last_end = 0.0, None
     for sp in spans:
-        start = cursor if sp is None or not own else sp[0]
-        starts.append(start)
-        cursor = start + (0.0 if sp is None else sp[1] - sp[0])
-    return starts, own
+        if sp is not None:
+            if last_end is None or sp[0] < last_end:  # a clock of its own from here: its run starts where the last ended
+                shift, clocks = cursor - sp[0], clocks + 1
+            start = sp[0] + shift
+            cursor, last_end = start + (sp[1] - sp[0]), sp[1]
+        starts.append(cursor if sp is None else start)
+    return starts, clocks
 
 
 def _from_start(tab: Table) -> dict[str, np.ndarray]:
@@ -303,7 +310,7 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
     if out.exists() and not overwrite:
         raise BadInput(f"{out}: already exists (use --force to overwrite)")
     steps = _plan(m.record, tables)
-    starts, own = placement(m.record, tables)
+    starts, _ = placement(m.record, tables)
     from labrig.store.writer import SessionWriter  # heavy (h5py): only once the input is known good
 
     uid = new_uid()
@@ -316,7 +323,7 @@ def import_manifest(manifest: str | Path, out: str | Path, overwrite: bool = Fal
         t1 = starts[0]
         for plan, tab, t0 in zip(steps, tables, starts):
             w(StepStart(uid, plan.index, t0))
-            data = _from_start(tab) if own and plan.kind != RecordKind.EIS else tab.columns
+            data = tab.columns if plan.kind == RecordKind.EIS else _from_start(tab)
             for spec in plan.streams:
                 cols = [c.name for c in spec.columns]
                 for a in range(0, tab.rows, BLOCK_ROWS):

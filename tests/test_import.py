@@ -274,6 +274,47 @@ def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path)
     assert clamp_settings([500.0, 900.0, 1300.0, 1700.0, 1300.0]) == {500.0: 500.0, 900.0: 900.0, 1300.0: 1300.0, 1700.0: 1700.0}
 
 
+def test_a_logger_restarted_at_each_clamp_setting_keeps_each_blocks_rests(tmp_path):
+    """A logging program run once per clamp setting, its clock from its own start: the 612 kPa block's two records
+    on one clock (a 30 s rest between them, from 5 s), the 3062 kPa record on a new one (from 3 s). Each block keeps
+    its rests, the blocks follow back to back, every record's stored ``t_s`` counts from its start (as a run stores
+    it), and the session exported again is one clock that ``labrig import`` reads the same."""
+    from labrig.importer import placement
+    from labrig.store import SessionReader
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    clocks = {"p612_step.csv": 5.0, "p612_sine_2Hz.csv": None, "p3062_step.csv": 3.0}
+    t0, spans = 0.0, []
+    for name, restart in clocks.items():
+        c = csv_columns(ex / name)
+        t0 = restart if restart is not None else t0 + 30.0
+        write_time_series(ex / name, np.round(t0 + c["t_s"], 6), c["v_V"], c["i_A"], c["disp_m"])
+        spans.append((t0, t0 + c["t_s"][-1]))
+        t0 += c["t_s"][-1]
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    with SessionReader(tmp_path / "s.h5") as r:
+        steps = [st for st in r.steps() if st.kind != "eis"]
+        starts = np.array([st.t_start for st in steps])
+        assert all(r.stream(st, "daq")["t_s"][0] == 0.0 for st in steps)
+    np.testing.assert_allclose(starts[:2], [spans[0][0], spans[1][0]], atol=1e-6)  # the first block's clock and rest
+    assert starts[2] == pytest.approx(spans[1][1], abs=1e-6)  # the second block right after the first ended
+    assert main(["export", str(tmp_path / "s.h5"), "--out", str(tmp_path / "back")]) == 0
+    assert main(["import", str(tmp_path / "back" / "manifest.toml"), "--out", str(tmp_path / "s2.h5")]) == 0
+    with SessionReader(tmp_path / "s2.h5") as r:
+        again = np.array([st.t_start for st in r.steps() if st.kind != "eis"])
+    np.testing.assert_allclose(again, starts, atol=1e-5)
+    # a CSV per record from 0: each its own clock, back to back (as before); one clock throughout: its times
+    from types import SimpleNamespace as NS
+
+    def recs(*spans):
+        return [NS(kind="step") for _ in spans], [NS(columns={"t_s": np.array(sp)}) for sp in spans]
+
+    assert placement(*recs((0.0, 4.0), (0.0, 4.0), (0.0, 4.0))) == ([0.0, 4.0, 8.0], 3)
+    assert placement(*recs((10.0, 14.0), (20.0, 24.0), (30.0, 34.0))) == ([10.0, 20.0, 30.0], 1)
+    assert placement(*recs((-0.5, 3.5), (-0.5, 3.5))) == ([0.0, 4.0], 2)  # a trigger's clock: from the session's 0
+
+
 def test_a_clock_of_the_time_of_day_is_carried_past_midnight(tmp_path):
     """A logger that stamps rows with the time of day, the session run through midnight during a rest: the records
     after it read near 0 again. They are carried a day on, so every rest between records is kept as it was measured,

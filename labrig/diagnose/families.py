@@ -10,11 +10,11 @@ names the effect by its signature; the form found is reported (``extended.form``
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path |
-| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's) |
+| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge; from an onset inside the session; set anew at each clamp setting |
-| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep |
+| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep; a screw shaken loose by the resonant records (Junker) |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
 The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``. The families whose cause sits at the clamp
