@@ -251,7 +251,8 @@ def test_a_spectrum_in_two_bands_reads_as_one_and_a_repeat_as_the_later(tmp_path
 
 def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path):
     """A lab that writes the load cell's reading on each record, not the setpoint, gives a relaxing clamp a new
-    pressure on every record: the records of one setting are still one setting (its pressure their median), two
+    pressure on every record: the records of one setting are still one setting (its pressure the first record's
+    reading, the clamp as set), two
     settings stay two, and the loader says what it grouped."""
     from labrig.estimate.session_data import clamp_settings, load_session
 
@@ -263,13 +264,13 @@ def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path)
     (ex / "manifest.toml").write_text("[[record]]".join(m))
     assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
     sd = load_session(tmp_path / "s.h5")
-    assert [p.pressure_kPa for p in sd.pressures] == [604.9, pytest.approx(3040.25)]
+    assert [p.pressure_kPa for p in sd.pressures] == [611.8, 3049.5]
     assert len(sd.pressures[0].records) == 2 and sd.pressures[0].eis is not None and sd.pressures[1].eis is not None
     assert any("5 distinct clamp pressures read on the records, grouped into 2 clamp settings" in n for n in sd.notes)
     # each record carries its setting (what the diagnosis' features and split group by), its own reading beside
     for p in sd.pressures:
         assert all(r.meta["pressure_kPa"] == p.pressure_kPa for r in p.records)
-    assert [r.meta.get("pressure_read_kPa") for r in sd.pressures[1].records] == [3049.5]  # the step (the spectrum read 3031)
+    assert [r.meta.get("pressure_read_kPa") for r in sd.pressures[0].records] == [None, 604.9]  # the step, then the sine
     # seed 001's closest settings (500 ... 1700 kPa, 1300 -> 1700 the nearest) and setpoints stay as they are
     assert clamp_settings([500.0, 900.0, 1300.0, 1700.0, 1300.0]) == {500.0: 500.0, 900.0: 900.0, 1300.0: 1300.0, 1700.0: 1700.0}
 

@@ -318,8 +318,10 @@ SETTING_GAP = 0.08
 def clamp_settings(readings: list[float]) -> dict[float, float]:
     """Each record's clamp pressure (kPa) -> its setting's: a lab that writes the load cell's reading on each record,
     not the setpoint, gives a new value on every record of a setting as the clamp relaxes. Sorted, readings within
-    ``SETTING_GAP`` of the next (in ln p) are one setting, its pressure the median of its records' readings; exact
-    setpoints map to themselves."""
+    ``SETTING_GAP`` of the next (in ln p) are one setting; ``readings`` in the records' order, its pressure is the first
+    record's reading, the clamp as it was set (every clamp form of the diagnosis counts its loss from the setting's
+    force: a median, the force halfway through the creep, read a relaxing clamp 1-2 % above its setting at first and
+    left no form able to start there). Exact setpoints map to themselves."""
     if not readings:
         return {}
     vals = np.sort(np.asarray(readings, float))
@@ -327,9 +329,9 @@ def clamp_settings(readings: list[float]) -> dict[float, float]:
     group = np.r_[0, np.cumsum(np.diff(logs) > SETTING_GAP)]
     out: dict[float, float] = {}
     for g in np.unique(group):
-        members = vals[group == g]
-        rep = float(np.median(members)) if np.ptp(members) > 0 else float(members[0])
-        out.update({float(v): rep for v in members})
+        members = set(vals[group == g].tolist())
+        first = next(float(r) for r in readings if r in members)
+        out.update({float(v): first for v in members})
     return out
 
 
