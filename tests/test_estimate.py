@@ -331,14 +331,14 @@ def test_an_averaged_period_reads_as_the_record_it_was_averaged_from():
 
 
 def test_repeated_sines_stored_on_their_own_clocks_drift_on_the_session_clock(tmp_path):
-    """Three identical stepped sines whose CSVs keep clocks of their own (first stamps 300, 0 and 600 s: no one clock,
-    so the import lays them back to back and stores their times as written) losing 3 % of their gain each: the
+    """Three identical stepped sines whose CSVs keep clocks of their own (first stamps 300, 0 and 0 s: each starts
+    before the one before it ended, so the import lays them back to back) losing 3 % of their gain each: the
     repeats' drift is read at the records' moments on the session clock, from the first to the last record's middle
     (each record's own first stamp taken off, as for the steps), not at their stamps."""
     fs, f, dur = 100.0, 2.0, 10.0
     t = np.arange(int(dur * fs)) / fs
     rng = np.random.default_rng(5)
-    for k, (first, g) in enumerate(((300.0, 1.0), (0.0, 0.97), (600.0, 0.94))):
+    for k, (first, g) in enumerate(((300.0, 1.0), (0.0, 0.97), (0.0, 0.94))):
         v = 0.5 * np.sin(2 * np.pi * f * t)
         d = g * 1e-4 * np.sin(2 * np.pi * f * t - 0.3) + 1e-8 * rng.standard_normal(t.size)
         _write_csv(tmp_path / f"s{k}.csv", first + t, v, 1e-3 * v, d)
