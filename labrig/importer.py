@@ -7,8 +7,8 @@ Every problem is a ``BadInput`` with one line naming the file, the record (1-bas
 or CSV line, and the problem.
 
 Time placement: drift effects (dehydration, clamp relaxation) need the time between records. When the
-CSVs share one clock (each time series starts at or after the end of the one before it, as ``labrig
-export`` writes them) each record starts at its own first ``t_s`` and its stored times count from there,
+CSVs share one clock (no two time series overlap in time, in whatever order the manifest lists them; ``labrig
+export`` writes them in order) each record starts at its own first ``t_s`` and its stored times count from there,
 exactly as a run stores them; a clock of the time of day that passed midnight in a rest is carried a day on from
 there (``day_unwrapped``). A record that starts before the one before it ended is on a clock of its own (a logging
 program restarted at each clamp setting; every CSV from 0): each run of records on one clock keeps its times and
@@ -276,6 +276,15 @@ def placement(records: list[Record], tables: list[Table]) -> tuple[list[float], 
     spans = [None if rec.kind == RecordKind.EIS else (float(tab.columns["t_s"][0]), float(tab.columns["t_s"][-1])) for rec, tab in zip(records, tables)]
     spans = day_unwrapped(spans)
     timed = [sp for sp in spans if sp is not None]
+    by_start = sorted(timed)
+    if len(timed) > 1 and all(b[0] >= a[1] for a, b in zip(by_start, by_start[1:])):
+        # one clock whose records never overlap, in whatever order the manifest lists them (a manifest written by
+        # hand, or sorted by name): each record at its own stamp, a spectrum where the record before it ended
+        starts, last = [], max(by_start[0][0], 0.0)
+        for sp in spans:
+            starts.append(last if sp is None else sp[0])
+            last = last if sp is None else sp[1]
+        return starts, 1
     starts, clocks = [], 0
     cursor = max(timed[0][0], 0.0) if timed else 0.0
     shift, last_end = 0.0, None

@@ -316,6 +316,27 @@ def test_a_logger_restarted_at_each_clamp_setting_keeps_each_blocks_rests(tmp_pa
     assert placement(*recs((-0.5, 3.5), (-0.5, 3.5))) == ([0.0, 4.0], 2)  # a trigger's clock: from the session's 0
 
 
+def test_records_of_one_clock_listed_out_of_order_keep_their_moments(tmp_path):
+    """A manifest that lists its records out of time order (written by hand, or sorted by name), the CSVs on one clock
+    whose records never overlap: each record starts at its own first stamp, so the rests and the order in time are
+    the session's, not the manifest's (before, any step back laid every record back to back and lost every rest)."""
+    from labrig.store import SessionReader
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    firsts = {"p612_step.csv": 100.0, "p612_sine_2Hz.csv": 140.0, "p3062_step.csv": 400.0}
+    for name, t0 in firsts.items():
+        c = csv_columns(ex / name)
+        write_time_series(ex / name, np.round(t0 + c["t_s"], 6), c["v_V"], c["i_A"], c["disp_m"])
+    parts = (ex / "manifest.toml").read_text().split("[[record]]")
+    head, recs = parts[0], parts[1:]
+    (ex / "manifest.toml").write_text("[[record]]".join([head] + recs[3:] + recs[:3]))  # 3062 kPa listed first
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    with SessionReader(tmp_path / "s.h5") as r:
+        got = {st.metadata["source_file"]: st.t_start for st in r.steps() if st.kind != "eis"}
+    assert got == pytest.approx(firsts)
+
+
 def test_a_clock_of_the_time_of_day_is_carried_past_midnight(tmp_path):
     """A logger that stamps rows with the time of day, the session run through midnight during a rest: the records
     after it read near 0 again. They are carried a day on, so every rest between records is kept as it was measured,
