@@ -68,37 +68,44 @@ def _design(t: np.ndarray, f: float, harmonics: int, trend: int) -> np.ndarray:
 GAP = 1.5  # a spacing this many times the median is samples lost (a jittered clock stays well under it)
 
 
+def _clock(t: np.ndarray) -> tuple[float, bool]:
+    """(the sampling clock's spacing, whether the stamps are thinned) from one pass over the spacings: see
+    ``thinned`` and ``sample_spacing``."""
+    d = np.diff(np.asarray(t, float))
+    if not d.size:
+        return 1.0, False
+    med = float(np.median(d))
+    if not np.max(d) > GAP * med:
+        return med, False
+    d0 = float(np.min(d[d > 0]))
+    k = d / d0
+    return (d0 if float(np.max(np.abs(k - np.round(k)))) < 0.1 else med), True
+
+
 def thinned(t: np.ndarray) -> bool:
     """Whether a record's stamps have gaps: rows left out of a uniform clock's (lost packets, a logger or historian
     that keeps only the rows it needs, as swinging-door compression or a deadband does), so that a count of samples
     is not a span of time. Records without gaps keep the count arithmetic below (unchanged, to the sample)."""
-    d = np.diff(np.asarray(t, float))
-    return bool(d.size and np.max(d) > GAP * np.median(d))
+    return _clock(t)[1]
 
 
 def sample_spacing(t: np.ndarray) -> float:
     """The sampling clock's spacing under a record's stamps: their median spacing, or for thinned stamps (``thinned``)
     that are a subset of one clock's rows, that clock's: the smallest spacing, of which every spacing is a whole
     multiple (a historian that keeps a quarter of a slow record's rows has a median spacing of several samples)."""
-    d = np.diff(np.asarray(t, float))
-    med = float(np.median(d)) if d.size else 1.0
-    if not thinned(t):
-        return med
-    d0 = float(np.min(d[d > 0]))
-    k = d / d0
-    return d0 if float(np.max(np.abs(k - np.round(k)))) < 0.1 else med
+    return _clock(t)[0]
 
 
 def _whole_cycles(t: np.ndarray, f: float, skip_cycles: float, cycles: float | None) -> slice:
-    if thinned(t):  # a count of samples is no span of time: the cycles are cut by the stamps
-        dt = sample_spacing(t)
+    dt, thin = _clock(t)
+    if thin:  # a count of samples is no span of time: the cycles are cut by the stamps
         start = int(np.searchsorted(t, t[0] + skip_cycles / f - 0.5 * dt))
         if start >= t.size:
             return slice(t.size, t.size)
         n_cyc = int(np.floor((t[-1] - t[start] + dt) * f + 1e-9)) if cycles is None else int(cycles)
         stop = int(np.searchsorted(t, t[start] + max(n_cyc, 0) / f - 0.5 * dt))
         return slice(start, min(stop, t.size))
-    fs = 1.0 / np.median(np.diff(t))
+    fs = 1.0 / dt
     start = min(int(round(skip_cycles / f * fs)), t.size)
     n_cyc = int(np.floor((t.size - start) * f / fs)) if cycles is None else int(cycles)
     n = int(round(max(n_cyc, 0) / f * fs))  # a record shorter than its settling cycles has none left: empty
@@ -109,9 +116,9 @@ def cycle_slices(t: np.ndarray, f: float) -> list[slice]:
     """The record's successive whole cycles at ``f``: runs of round(fs/f) samples, or for thinned stamps the samples
     within each cycle's span of time (those with too few samples for a cycle's fit left out)."""
     t = np.asarray(t, float)
-    dt = sample_spacing(t)
+    dt, thin = _clock(t)
     n1 = max(int(round(1.0 / (f * dt))), 1)
-    if not thinned(t):
+    if not thin:
         return [slice(c * n1, (c + 1) * n1) for c in range(max(int(t.size // n1), 1))]
     nc = max(int(np.floor((t[-1] - t[0] + dt) / (n1 * dt) + 1e-9)), 1)
     edges = np.searchsorted(t, t[0] + np.arange(nc + 1) * n1 * dt - 0.5 * dt)
