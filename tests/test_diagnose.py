@@ -637,3 +637,22 @@ def test_the_flag_keeps_a_loop_a_memoryless_knee_does_not_have():
         return min(float(np.sqrt(np.mean(f.fun**2))) for f in fits)  # um RMS
 
     assert misfit(1.0) < 0.05 and misfit(REVERSE_SHARE_MAX) > 10 * misfit(1.0) + 1.0
+
+
+def test_two_stage_sorption_runs_fast_then_creeps_and_holds_the_saturating_form():
+    """Berens-Hopfenberg's two stages: 0 at the start and 1 at the session's end, the fast share w nearly spent after
+    a few fast time constants while the slow stage still runs, and w = 1 the saturating form exactly."""
+    import numpy as np
+
+    from labrig.diagnose import slow_forms
+
+    u = np.linspace(0, 1, 1001)
+    x = slow_forms.two_stage(u, (0.02, 50.0, 0.6))
+    assert x[0] == 0 and abs(x[-1] - 1) < 1e-12 and np.all(np.diff(x) > 0)
+    slow_end = 1 - np.exp(-1 / (50 * 0.02))
+    share = 0.6 / (0.6 + 0.4 * slow_end)  # the fast stage's part of the loss at the session's end
+    k = np.searchsorted(u, 0.1)  # five fast time constants in: the fast stage spent, the slow one 10 % of its way
+    assert share * 0.99 < x[k] < share + 0.4 * (1 - np.exp(-0.1)) / (0.6 + 0.4 * slow_end)
+    rate = np.gradient(x, u)
+    assert rate[5] > 10 * rate[-1] > 0  # fast at first, still creeping at the end
+    np.testing.assert_allclose(slow_forms.two_stage(u, (0.3, 7.0, 1.0)), slow_forms.saturating(u, (0.3,)), atol=1e-12)

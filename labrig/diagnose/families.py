@@ -13,7 +13,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
-| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; by charge; from an onset inside the session; set anew at each clamp setting |
+| dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep; a screw shaken loose by the resonant records (Junker) |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
@@ -440,6 +440,10 @@ FAMILIES["dehydration"] += [
     _form("dehydration", "falling_rate", (*_DRY, "critical_u", "removable_ratio"), (1.0, 0.2, 1.0, 0.1, 0.4, 0.5),
           (0.5, -0.5, 0.5, -0.5, 0.05, 0.05), (2.0, 0.9, 2.0, 0.9, 0.95, 5.0), slow.session_time(slow.falling_rate),
           "a constant drying rate up to the critical moisture, then a falling rate towards the removable water (the drying curve)"),
+    _form("dehydration", "two_stage", (*_DRY, "tau_spans", "slow_ratio", "fast_share"), (1.0, 0.2, 1.0, 0.1, 0.1, 10.0, 0.5),
+          (0.5, -0.5, 0.5, -0.5, 0.005, 2.0, 0.0), (2.0, 0.9, 2.0, 0.9, 2.0, 200.0, 1.0), slow.session_time(slow.two_stage),
+          "gain and conductance falling in two first-order stages, a fast share then a slow one (sorption by diffusion, then "
+          "the network's relaxation)"),
     _form("dehydration", "charge", (*_DRY, "charge_share"), (1.0, 0.2, 1.0, 0.1, 0.7), (0.5, -0.5, 0.5, -0.5, 0.0), (2.0, 0.9, 2.0, 0.9, 1.0),
           slow.drying(slow.by_charge), "gain and conductance falling with the charge passed (electro-osmotic drag), beside the clock's evaporation"),
     _form("dehydration", "onset", (*_DRY, "onset_u", "tau_spans"), (1.0, 0.2, 1.0, 0.1, 0.4, 0.3), (0.5, -0.5, 0.5, -0.5, 0.0, 0.01),

@@ -68,6 +68,17 @@ def power(u, sh):
     return u**n
 
 
+def two_stage(u, sh):
+    """Two-stage sorption (Berens and Hopfenberg's diffusion-relaxation model, the water a Nafion film takes up or gives
+    off): a fast share w by diffusion through the film, the rest at the polymer network's own relaxation, k times
+    slower, each first order: w (1 - exp(-u/tau)) + (1 - w)(1 - exp(-u/(k tau))) (u, tau in session spans). A loss
+    that runs fast and keeps creeping (the network relaxing, a film or fouling layer growing in two stages, a pore
+    filling whose driving force is spent); w = 1 is the saturating form. Normalised to 1 at the session's end."""
+    tau, k, w = sh
+    f = lambda x: w * -np.expm1(-x / tau) + (1 - w) * -np.expm1(-x / (k * tau))  # noqa: E731
+    return f(np.asarray(u, float)) / f(np.array(1.0))
+
+
 def falling_rate(u, sh):
     """The classic drying curve: a constant-rate period (surface water leaving at a fixed rate) up to the critical
     moisture at u_c, then a falling-rate period in which the rate is proportional to the water still removable,
