@@ -31,7 +31,7 @@ from labrig.diagnose.drive_line import series_contexts, series_reading
 from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
-from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, wet_contexts
+from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, reshaped, wet_contexts
 from labrig.estimate.session_data import SessionData
 from labrig.physics import transfer
 from labrig.physics.impedance import impedance
@@ -498,15 +498,25 @@ class _Scorer:
         if corr is None:
             return None
 
-        def on_wet(k_i: float) -> Candidate | None:
-            both = wet_contexts(self.wet_session, feats, c.ext, {**corr, "wet_conductance_loss": k_i}, build_context)
-            if both is None:
-                return None
-            w = self.fitted_on(c.name, c.ext, *both, extra_dof=2)  # the two losses corrected count too
-            return dataclasses.replace(w, params={**w.params, **corr, "wet_conductance_loss": k_i}, refit=WetRefit(*both))
+        def wet_at(corr: dict[str, float]) -> Callable[[float], Candidate | None]:
+            def on_wet(k_i: float) -> Candidate | None:
+                both = wet_contexts(self.wet_session, feats, c.ext, {**corr, "wet_conductance_loss": k_i}, build_context)
+                if both is None:
+                    return None
+                w = self.fitted_on(c.name, c.ext, *both, extra_dof=2)  # the two losses corrected count too
+                return dataclasses.replace(w, params={**w.params, **corr, "wet_conductance_loss": k_i}, refit=WetRefit(*both))
+            return on_wet
 
-        k0 = corr["wet_conductance_loss"]
-        return on_wet(k0), on_wet, k0
+        on_wet, k0 = wet_at(corr), corr["wet_conductance_loss"]
+        first = on_wet(k0)
+        # once more at the shape the form takes on the wet strip (a fixed point: the correction's loss is then the
+        # loss the form finds there): the baseline, which took the drying in pressure by pressure, bends the shape
+        # the form first finds there (on fresh28's fouling, seen, a fast-then-slow loss read as nearly linear)
+        again = None if first is None else reshaped(self.wet_session, feats, c.ext, corr, first.params)
+        if again is not None:
+            on_wet, k0 = wet_at(again), again["wet_conductance_loss"]
+            first = on_wet(k0)
+        return first, on_wet, k0
 
     def behind_series(self) -> Candidate:
         """The rival's series element fitted, from the DAQ's and the analyser's reading of it, on the seed-000 fit of

@@ -156,6 +156,20 @@ def correction(ws: WetSession, feats: Features, ext: Extension, params: dict[str
             **{f"wet_{p}": float(params[p]) for p in ext.params[4:]}}
 
 
+def reshaped(ws: WetSession, feats: Features, ext: Extension, corr: dict[str, float], wet_params: dict[str, float]) -> dict[str, float] | None:
+    """The correction ``corr`` at the loss's shape the form took on the wet strip (``wet_params``: its fit there), the
+    conductance's loss read again off the admittance's trace at that shape, the displacement's loss kept. None where
+    the form has no shape parameters or the trace gives no reading."""
+    shape = ext.params[4:]
+    if not shape:
+        return None
+    x = loss_of(ext, np.r_[np.zeros(4), [wet_params[p] for p in shape]], feats)
+    k_i = None if x is None else conductance_loss(feats, x, ws.fit_set)
+    if k_i is None:
+        return None
+    return {**corr, "wet_conductance_loss": k_i, **{f"wet_{p}": float(wet_params[p]) for p in shape}}
+
+
 def wet_contexts(ws: WetSession, feats: Features, ext: Extension, corr: dict[str, float], build) -> tuple[Context, Context] | None:
     """The fitted and held-out contexts (``build``: ``engine.build_context``) on the seed-000 fit of the session
     corrected by ``corr`` (``correction``), their spectra dried again. None if that fit gives no strip."""
