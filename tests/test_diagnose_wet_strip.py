@@ -15,7 +15,7 @@ import pytest
 
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, SpectrumFeature
-from labrig.diagnose.wet_strip import MIN_SINES, WetSession, conductance_loss, correction, loss_of, redried, refine_loss, wet_session
+from labrig.diagnose.wet_strip import MIN_SINES, WetSession, conductance_loss, correction, loss_of, redried, refine_loss, reshaped, wet_session
 from labrig.estimate.session_data import PressureData, SessionData, TimeRecord
 from labrig.records import RecordKind
 
@@ -118,3 +118,26 @@ def test_the_conductance_loss_is_refined_by_the_fitted_halfs_chi_square(k0, expe
     best = refine_loss(k0, on_wet)
     assert best.k == pytest.approx(expect) and len(seen) <= 3 and seen[0] == k0
     assert refine_loss(0.1, lambda k: None) is None  # no strip from the refit: no candidate
+
+
+def test_the_correction_is_made_again_at_the_shape_the_form_takes_on_the_wet_strip():
+    """A conductance lost fast and then held (first order, tau 3 % of the session): read at a nearly linear shape
+    (what a baseline that took the drying in pressure by pressure lets the form find) the admittance's trace gives
+    the loss wrong; at the wet strip's shape it reads it to 1e-3, the displacement's loss and the form's own
+    parameters kept. A form without shape parameters is not reshaped."""
+    k_i, tau = 0.2, 0.03
+    feats = _features(0.0)
+    x_true = lambda t: -np.expm1(-np.asarray(t, float) / 4500.0 / tau) / -np.expm1(-1 / tau)  # noqa: E731
+    for spec in feats.spectra:
+        spec.Z = _z(spec.f, spec.pressure_kPa) / (1 - k_i * x_true(spec.t_start))
+    for s in feats.sines:
+        s.Hi = complex((1 - k_i * x_true(s.t_start)) / _z(np.array([s.f]), s.pressure_kPa)[0])
+    ext = next(e for e in FAMILIES["dehydration"] if e.form == "saturating")
+    ws = WetSession(SimpleNamespace(), set(P), set(P))
+    corr = correction(ws, feats, ext, dict(zip(ext.params, [1.0, 0.1, 1.0, 0.1, 3.0])))
+    assert corr["wet_conductance_loss"] < 0.6 * k_i  # the nearly linear shape reads half the loss
+    again = reshaped(ws, feats, ext, corr, {"tau_spans": tau, "gain_loss": 0.05})
+    assert again["wet_conductance_loss"] == pytest.approx(k_i, abs=1e-3)
+    assert again["wet_tau_spans"] == tau and again["wet_gain_loss"] == corr["wet_gain_loss"]
+    lin, th = _linear()
+    assert reshaped(ws, feats, lin, correction(ws, feats, lin, dict(zip(lin.params, th))), {}) is None
