@@ -106,6 +106,8 @@ def conductance_loss(feats: Features, x: Callable[[np.ndarray], np.ndarray], pre
         return None
 
     def cost(k: float) -> float:
+        if any(np.any(k * xp >= 1.0) for xp in xs):
+            return np.inf  # a loss past the whole conductance (a shape above 1 between its ends): no reading there
         return sum(float(np.sum((r - r.mean()) ** 2)) for r in (y - np.log1p(-k * xp) for xp, y in zip(xs, ys)))
 
     return float(minimize_scalar(cost, bounds=LOSS_BOUNDS, method="bounded", options={"xatol": 1e-5}).x)
