@@ -58,7 +58,7 @@ def _capture(monkeypatch, name: str) -> dict:
     return got
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""
@@ -370,7 +370,7 @@ def test_block_clock_imports(tmp_path):
 def test_deterministic_per_seed():
     """Every form gives the same session twice from the same seed, and another from another (all of them: the newest
     set)."""
-    t2.check_deterministic(FORMS, every=True)
+    t2.check_deterministic(FORMS)
 
 
 def test_case_list():
