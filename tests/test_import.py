@@ -249,6 +249,39 @@ def test_a_spectrum_in_two_bands_reads_as_one_and_a_repeat_as_the_later(tmp_path
     assert any("repeats the one before it at 3062 kPa" in n for n in sd.notes)
 
 
+def test_a_spectrum_written_in_passes_reads_as_their_average_ascending(tmp_path):
+    """An analyser that sweeps each spectrum twice from the top down and writes both passes into one file: every
+    frequency twice, in no ascending order. The analysis reads one spectrum, ascending, each frequency the mean of its
+    passes (a note says so), the stored record keeps every row, and the drying's admittance trace (a spline in log f)
+    reads on it."""
+    from types import SimpleNamespace
+
+    from labrig.diagnose.features import Features, SpectrumFeature
+    from labrig.diagnose.wet_strip import conductance_loss
+    from labrig.estimate.session_data import load_session
+
+    ex = tmp_path / "ex"
+    shutil.copytree(EXAMPLE, ex)
+    z = csv_columns(ex / "p612_eis.csv")
+    f, zc = z["f_Hz"][::-1], (z["z_re_ohm"] + 1j * z["z_im_ohm"])[::-1]
+    second = zc * (1 + 0.002 * np.cos(np.arange(f.size)))  # the second pass, within the analyser's repeatability
+    both = np.r_[zc, second]
+    np.savetxt(ex / "p612_eis.csv", np.column_stack([np.r_[f, f], both.real, both.imag]), delimiter=",",
+               header="f_Hz,z_re_ohm,z_im_ohm", comments="", fmt="%.12g")
+    assert main(["import", str(ex / "manifest.toml"), "--out", str(tmp_path / "s.h5")]) == 0
+    with SessionReader(tmp_path / "s.h5") as s:
+        assert s.stream(2, "eis")["f_Hz"].size == 2 * f.size
+    sd = load_session(tmp_path / "s.h5")
+    got_f, got_z = sd.pressures[0].eis
+    np.testing.assert_allclose(got_f, z["f_Hz"], rtol=1e-9)
+    np.testing.assert_allclose(got_z, ((zc + second) / 2)[::-1], rtol=1e-9)
+    assert any(f"{f.size} of the spectrum's frequencies measured more than once" in n for n in sd.notes)
+    feats = Features(t0=0.0, t1=100.0, spectra=[SpectrumFeature(612.0, got_f, got_z, 1e-3, 0.0)])
+    feats.sines = [SimpleNamespace(pressure_kPa=612.0, f=float(fq), t_start=10.0 * k, Hi=complex(1 / np.interp(fq, got_f, got_z)))
+                   for k, fq in enumerate(got_f[(got_f > got_f[0]) & (got_f < got_f[-1])][:5])]
+    assert conductance_loss(feats, lambda t: np.asarray(t, float) / 100.0, {612.0}) is not None
+
+
 def test_pressures_read_on_each_record_group_into_their_clamp_settings(tmp_path):
     """A lab that writes the load cell's reading on each record, not the setpoint, gives a relaxing clamp a new
     pressure on every record: the records of one setting are still one setting (its pressure the first record's

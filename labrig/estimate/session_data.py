@@ -338,28 +338,40 @@ def clamp_settings(readings: list[float]) -> dict[float, float]:
 SPECTRUM_REPEAT_SHARE = 0.5  # a second spectrum sharing more of its frequencies than this is a repeat, not a band
 
 
+def merged_repeats(f: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
+    """A spectrum ascending in frequency, the values at one frequency measured more than once (an analyser that sweeps
+    twice and writes both passes, a point re-measured, two bands that overlap) averaged: (f, Z, how many repeats were
+    merged)."""
+    f, z = np.asarray(f, float), np.asarray(z, complex)
+    order = np.argsort(f, kind="stable")
+    f, z = f[order], z[order]
+    same = np.r_[False, np.diff(f) <= 1e-9 * f[1:]]  # the same frequency again
+    group = np.cumsum(~same) - 1
+    n = int(group[-1]) + 1
+    count = np.bincount(group, None, n)
+    f_out = np.bincount(group, f, n) / count
+    z_out = (np.bincount(group, z.real, n) + 1j * np.bincount(group, z.imag, n)) / count
+    return f_out, z_out, int(same.sum())
+
+
 def join_spectra(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray]) -> tuple[np.ndarray, np.ndarray] | None:
     """One spectrum from two bands of it (e.g. a potentiostat's FRA below some frequency, an impedance analyser
     above): the union of their frequencies, ascending, the two values averaged where both measured one. None where
     they share most of their frequencies (over ``SPECTRUM_REPEAT_SHARE`` of the shorter): that is the spectrum
     measured again, a moment of its own, not a band of it."""
-    f = np.concatenate([a[0], b[0]]).astype(float)
-    z = np.concatenate([a[1], b[1]]).astype(complex)
-    order = np.argsort(f, kind="stable")
-    f, z = f[order], z[order]
-    same = np.r_[False, np.diff(f) <= 1e-9 * f[1:]]  # the same frequency in both
-    if same.sum() > SPECTRUM_REPEAT_SHARE * min(a[0].size, b[0].size):
+    f, z, shared = merged_repeats(np.concatenate([a[0], b[0]]), np.concatenate([a[1], b[1]]))
+    if shared > SPECTRUM_REPEAT_SHARE * min(a[0].size, b[0].size):
         return None
-    group = np.cumsum(~same) - 1
-    n = int(group[-1]) + 1
-    f_out = np.bincount(group, f, n) / np.bincount(group, None, n)
-    z_out = (np.bincount(group, z.real, n) + 1j * np.bincount(group, z.imag, n)) / np.bincount(group, None, n)
-    return f_out, z_out
+    return f, z
 
 
 def _add_spectrum(b: PressureData, f: np.ndarray, z: np.ndarray, t_start: float, name: str, notes: list[str]) -> None:
     """A pressure's spectrum, or its next band: joined to one already read (its moment the earlier start), or, where it
-    repeats that one, the later measurement kept with a note."""
+    repeats that one, the later measurement kept with a note. A record that holds its frequencies more than once (the
+    analyser's passes written into one file) is read as their average at each frequency."""
+    f, z, repeats = merged_repeats(f, z)
+    if repeats:
+        notes.append(f"step {name}: {repeats} of the spectrum's frequencies measured more than once; each read as their average")
     if b.eis is None:
         b.eis, b.eis_t_start = (f, z), t_start
         return
