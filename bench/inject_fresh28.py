@@ -241,18 +241,24 @@ def hy_grommet_seal(s: Session) -> None:
     radii = np.geomspace(0.02, 0.15, 3) * big * s.rng.uniform(0.7, 1.3)
     t_m, tau = s.t0 - s.rng.uniform(300.0, 1800.0), lu(s.rng, 30.0, 300.0)
     c = s.rng.uniform(0.3, 0.6) / math.log10(1.0 + (s.t1 - t_m) / tau)
-    z, prev = [0.0, 0.0, 0.0], 0.0
+    _stuck_zones(s, k, radii, lambda t: 1.0 - c * np.log10(1.0 + np.clip(t - t_m, 0.0, None) / tau))
+
+
+def _stuck_zones(s: Session, k: float, radii: np.ndarray, scale: Callable[[np.ndarray], np.ndarray]) -> None:
+    """Zones that stick and slide (stop operators of ``radii`` times ``scale(t)``, the radii changing through the
+    session) taking k of the motion: the reading u - k mean_j z_j, sample by sample through the session in time order,
+    the laser's noise kept on the held reading (inject_fresh26._split_noise)."""
+    z, prev = [0.0] * len(radii), 0.0
     for r in _chrono(s):
         sig, noise = _split_noise(r)
-        grip = 1.0 - c * np.log10(1.0 + np.clip(r.cols["t_s"] - t_m, 0.0, None) / tau)
         out = np.empty(sig.size)
-        for i, (u, g) in enumerate(zip(sig.tolist(), grip.tolist())):
+        for i, (u, g) in enumerate(zip(sig.tolist(), scale(r.cols["t_s"]).tolist())):
             du, acc = u - prev, 0.0
-            for j in range(3):
-                lim = radii[j] * g
+            for j, rad in enumerate(radii):
+                lim = rad * g
                 z[j] = min(max(z[j] + du, -lim), lim)
                 acc += z[j]
-            out[i] = u - k * acc / 3.0
+            out[i] = u - k * acc / len(radii)
             prev = u
         r.cols["disp_m"] = out + noise
 

@@ -43,6 +43,7 @@ from scipy import signal
 
 import inject
 import inject_fresh28  # noqa: F401  (registers every earlier set's forms, bases, presets and variants)
+from inject_fresh28 import _stuck_zones
 from inject import Case, Rec, Session, lu, map_disp, ref_disp
 from inject_fresh2 import _chrono, _map_through, _spec
 from inject_fresh3 import _resist, _sign, _through_x
@@ -299,20 +300,7 @@ def hy_stacked_pair(s: Session) -> None:
     k = s.rng.uniform(0.25, 0.5)
     radii = np.geomspace(0.02, 0.1, 3) * big * s.rng.uniform(0.7, 1.3)
     t_m, tau_e, h_inf = s.t0 - s.rng.uniform(300.0, 1200.0), lu(s.rng, 600.0, 2400.0), s.rng.uniform(0.3, 0.6)
-    z, prev = [0.0, 0.0, 0.0], 0.0
-    for r in _chrono(s):
-        sig, noise = _split_noise(r)
-        film = h_inf + (1.0 - h_inf) * np.exp(-np.clip(r.cols["t_s"] - t_m, 0.0, None) / tau_e)
-        out = np.empty(sig.size)
-        for i, (u, g) in enumerate(zip(sig.tolist(), (1.0 / film).tolist())):
-            du, acc = u - prev, 0.0
-            for j in range(3):
-                lim = radii[j] * g
-                z[j] = min(max(z[j] + du, -lim), lim)
-                acc += z[j]
-            out[i] = u - k * acc / 3.0
-            prev = u
-        r.cols["disp_m"] = out + noise
+    _stuck_zones(s, k, radii, lambda t: 1.0 / (h_inf + (1.0 - h_inf) * np.exp(-np.clip(t - t_m, 0.0, None) / tau_e)))
 
 
 # ------------------------------------------------------------------------------------------------ time delay
