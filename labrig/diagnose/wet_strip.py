@@ -146,30 +146,30 @@ def redried(ctx: Context, x: Callable[[np.ndarray], np.ndarray], k_i: float) -> 
     return out
 
 
+def _shape_reading(ws: WetSession, feats: Features, ext: Extension, params: dict[str, float]) -> dict[str, float] | None:
+    """The form's loss shape at ``params`` (its parameters past the four levels and losses) as ``wet_*`` names, with
+    the conductance's loss read off the admittance's trace on the fitted half at that shape. None: no separable loss
+    or no trace to read."""
+    shape = {f"wet_{p}": float(params[p]) for p in ext.params[4:]}
+    x = loss_of(ext, np.r_[np.zeros(4), list(shape.values())], feats)
+    k_i = None if x is None else conductance_loss(feats, x, ws.fit_set)
+    return None if k_i is None else {"wet_conductance_loss": k_i, **shape}
+
+
 def correction(ws: WetSession, feats: Features, ext: Extension, params: dict[str, float]) -> dict[str, float] | None:
     """The wet strip's correction for the form ``ext`` fitted on the baseline (``params``): its loss's shape, its
     displacement loss, and the conductance's loss read off the admittance's trace on the fitted half (the names
     ``wet_*`` report it with the form's own parameters). None: no separable loss or no trace to read."""
-    x = loss_of(ext, np.array([params[p] for p in ext.params]), feats)
-    k_i = None if x is None else conductance_loss(feats, x, ws.fit_set)
-    if k_i is None:
-        return None
-    return {"wet_gain_loss": float(np.clip(params["gain_loss"], *LOSS_BOUNDS)), "wet_conductance_loss": k_i,
-            **{f"wet_{p}": float(params[p]) for p in ext.params[4:]}}
+    reading = _shape_reading(ws, feats, ext, params)
+    return None if reading is None else {"wet_gain_loss": float(np.clip(params["gain_loss"], *LOSS_BOUNDS)), **reading}
 
 
 def reshaped(ws: WetSession, feats: Features, ext: Extension, corr: dict[str, float], wet_params: dict[str, float]) -> dict[str, float] | None:
     """The correction ``corr`` at the loss's shape the form took on the wet strip (``wet_params``: its fit there), the
     conductance's loss read again off the admittance's trace at that shape, the displacement's loss kept. None where
     the form has no shape parameters or the trace gives no reading."""
-    shape = ext.params[4:]
-    if not shape:
-        return None
-    x = loss_of(ext, np.r_[np.zeros(4), [wet_params[p] for p in shape]], feats)
-    k_i = None if x is None else conductance_loss(feats, x, ws.fit_set)
-    if k_i is None:
-        return None
-    return {**corr, "wet_conductance_loss": k_i, **{f"wet_{p}": float(wet_params[p]) for p in shape}}
+    reading = _shape_reading(ws, feats, ext, wet_params) if ext.params[4:] else None
+    return None if reading is None else {**corr, **reading}
 
 
 def wet_contexts(ws: WetSession, feats: Features, ext: Extension, corr: dict[str, float], build) -> tuple[Context, Context] | None:
