@@ -139,3 +139,40 @@ def test_the_walking_station_reads_each_record_at_its_moments_station():
         assert p.Hd[k] == pytest.approx(one, rel=1e-10)
     low, high = (abs(still[k] / ctx.Hd[k]) for k in (0, 2))  # 0.5 and 20 Hz at the first pressure
     assert low == pytest.approx(0.95**2, abs=0.02) and high < low - 0.05
+
+
+def test_each_channels_own_lag_rounds_the_current_spike_inside_the_averaged_block():
+    """``channel_lags``: 1/(1 + s tau) on each channel's sines, none at tau 0; the step re-driven at the record's own
+    rate, so a 2 ms lag on the current moves the charging spike's charge from the first 20 ms block into the next
+    (the spike lives inside the block the features average) while the charge passed stays the same, and leaves the
+    displacement alone."""
+    from scipy.signal import lfilter
+
+    from labrig.diagnose.features import StepFeature, predict_step, step_grid
+    from labrig.diagnose.families import _channel_lags
+
+    ctx = _context()
+    p0 = ctx.specimens[PRESSURES[0]]
+    fs, q = 2000.0, 40  # 20 ms blocks
+    v = np.r_[np.zeros(400), np.ones(7600)]
+    n = v.size // q
+    st = StepFeature("s", PRESSURES[0], 0.0, np.arange(n) * q / fs, np.zeros(n), np.zeros(n), np.zeros(n), 1e-9, 1e-9,
+                     1.0, v_full=v, fs_full=fs, q=q)
+    d0, i0 = predict_step(p0, st)
+    ctx.steps, ctx.step_d, ctx.step_i = [st], [d0], [i0]
+    f = np.array([sn.f for sn in ctx.sines])
+    same = _channel_lags(np.array([0.0, 0.0]), ctx)
+    np.testing.assert_allclose(same.Hi, ctx.Hi)
+    np.testing.assert_allclose(same.step_i[0], i0, rtol=1e-9, atol=1e-12 * np.max(np.abs(i0)))
+    p = _channel_lags(np.array([0.0, 0.002]), ctx)
+    np.testing.assert_allclose(p.Hi / ctx.Hi, 1 / (1 + 2j * np.pi * f * 0.002), rtol=1e-12)
+    np.testing.assert_allclose(p.Hd, ctx.Hd)
+    np.testing.assert_allclose(p.step_d[0], d0, rtol=1e-9, atol=1e-12 * np.max(np.abs(d0)))
+    edge = 400 // q
+    assert p.step_i[0][edge] < 0.95 * i0[edge] and p.step_i[0][edge + 1] > i0[edge + 1]  # the spike rounded into the next block
+    assert np.sum(p.step_i[0]) == pytest.approx(np.sum(i0), rel=1e-3)  # the same charge
+    # as a first-order lag on the samples at the record's rate would read it, then averaged in blocks
+    i_full = timeresp.respond(v, fs, step_grid(p0, v.size, fs))[1]
+    a = np.exp(-1.0 / (fs * 0.002))
+    lagged = st.decimate(lfilter([1 - a], [1, -a], i_full))
+    np.testing.assert_allclose(p.step_i[0][edge:edge + 3], lagged[edge:edge + 3], rtol=0.05)

@@ -10,7 +10,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
 | hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path |
-| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
+| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
@@ -30,7 +30,7 @@ from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _p
                                       played_drive, sensor_read)
 from labrig.diagnose import contact, flag, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc
-from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ
+from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ, specimen_for, step_grid
 from labrig.physics import timeresp
 
 _N = 64
@@ -356,6 +356,26 @@ def _lag(th, ctx: Context):
     return p
 
 
+def _channel_lags(th, ctx: Context):
+    """Each channel read through a first-order low-pass of its own, 1/(1 + s tau_d) on the displacement and
+    1/(1 + s tau_i) on the current: a sensor's output filter, a shunt amplifier's RFI or anti-alias filter on the
+    current's sense. Unlike a delay it rounds the steps' charging spike as well as lagging the sines; the steps are
+    re-driven at the record's own rate (the spike lives inside the first block the features average)."""
+    tau_d, tau_i = th
+    p = baseline(ctx)
+    if ctx.sines:
+        s = 2j * np.pi * np.array([x.f for x in ctx.sines])
+        p.Hd, p.Hi = p.Hd / (1 + s * tau_d), p.Hi / (1 + s * tau_i)
+    for k, st in enumerate(ctx.steps):
+        if st.fs_full <= 0 or st.v_full.size == 0:
+            continue
+        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
+        z = timeresp.grid_s(nfft, sigma, st.fs_full)
+        d, i = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [h / (1 + z * tau_d), y / (1 + z * tau_i)]))
+        p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
+    return p
+
+
 def _skew(th, ctx: Context):
     """Each channel read with its own delay after the recorded drive: tau_d on the displacement, tau_i on the
     current (an ADC's or a filter's latency on one channel, a multiplexer's skew). Equal and negative, the drive's
@@ -541,6 +561,9 @@ FAMILIES["time_delay"] += [
     _form("time_delay", "skew", ("tau_disp_s", "tau_cur_s"), (0.005, 0.0), (-0.2, -0.2), (0.2, 0.2), _skew,
           "each channel's own delay after the recorded drive, exp(-s tau_d) and exp(-s tau_i) (equal and negative: the "
           "drive's monitor late)", refit_mechanics=True),
+    _form("time_delay", "channel_lags", ("tau_disp_s", "tau_cur_s"), (0.002, 0.002), (0.0, 0.0), (0.1, 0.1), _channel_lags,
+          "each channel through a first-order low-pass of its own, 1/(1 + s tau_d) and 1/(1 + s tau_i): a sensor's output "
+          "filter, a shunt amplifier's RFI filter on the current", refit_mechanics=True),
     _form("time_delay", "lowpass", ("tau_s", "order"), (0.005, 2.0), (0.0, 1.0), (0.1, 30.0), lowpass,
           "the displacement read through (1 + s tau/n)^-n: a sensor's averaging, servo or anti-alias filter of a few poles "
           "(n = 1: the lag; n large: the delay)", refit_mechanics=True),

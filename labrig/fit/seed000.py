@@ -38,8 +38,10 @@ REL_UNDETERMINED = 1.0  # a parameter whose 1-sigma is larger than itself is not
 CURRENT_AGREES = 1.5
 # the share by which the current's RMS must fall when the electrical values are freed to it, where it puts the spectra
 # beyond CURRENT_AGREES: a current read late or filtered 0.21-0.24, a faradaic branch 0.42-0.88, a drying 0.74-0.88
-# (set on the seen sets fresh19-22, docs/diagnosis.md)
-CURRENT_MOVES = 0.3
+# (set on the seen sets fresh19-22, docs/diagnosis.md); fresh29's shunt amplifier's RFI filter (a 1 ms lag on the
+# current) 0.34, the seen sets fresh22-29's faradaic branches and dryings 0.64-0.94, the tuning set's 0.71-0.89: 0.38
+# splits 0.34 from 0.42 (docs/model.md)
+CURRENT_MOVES = 0.38
 MIN_FRF_LINES = 4  # alpha, gamma and K_t bar need a resonance and its flanks
 # the staged valley's largest step (log10 values: decades; exponents: their own units) per standard error of R:
 # clean sessions give at most 0.02, drying strips 0.5-14 in the cached sets, beyond 100 where a CI run overflowed
@@ -162,16 +164,29 @@ def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> t
     filter of its own): the spectra's values are kept (the third value returned: False). A strip that changed between
     the spectra and the sines (a drying) moves both, and the current, which the values then follow, is joined."""
     alone, sigma = fit_impedance(data, priors)
+    joined = current_agreement(data, priors, alone, sigma)
+    if joined is None:
+        return alone, sigma, True
+    res, spectra_rms, fall = joined
+    if spectra_rms > CURRENT_AGREES and fall < CURRENT_MOVES:
+        return alone, sigma, False
+    return res, sigma, True
+
+
+def current_agreement(data: list[PressureData], priors: dict[float, Specimen], alone: lmfit.minimizer.MinimizerResult,
+                      sigma: float) -> tuple[lmfit.minimizer.MinimizerResult, float, float] | None:
+    """The spectra and the DAQ's current admittance fitted together from the spectra's fit ``alone``: (the joined
+    fit, the spectra's RMS in it in units of their noise, the share by which the current's RMS fell from the spectra's
+    values to the joined ones); None without a current. ``fit_electrical`` reads the last two against
+    ``CURRENT_AGREES`` and ``CURRENT_MOVES``."""
     cur = [d for d in data if d.current_lines() is not None]
     if not cur:
-        return alone, sigma, True
+        return None
     problem = Problem(priors, eis=data, cur=cur, sigma_eis=sigma)
     res = problem.minimize(alone.params)
     n = problem.offsets[len(data)]
     rms = lambda r: float(np.sqrt(np.mean(r**2)))  # noqa: E731
-    if rms(res.residual[:n]) > CURRENT_AGREES and rms(res.residual[n:]) > (1 - CURRENT_MOVES) * rms(problem.residual(alone.params)[n:]):
-        return alone, sigma, False
-    return res, sigma, True
+    return res, rms(res.residual[:n]), 1.0 - rms(res.residual[n:]) / rms(problem.residual(alone.params)[n:])
 
 
 def valley(res: lmfit.minimizer.MinimizerResult, name: str) -> dict[str, float]:
