@@ -132,8 +132,9 @@ def test_a_record_with_nans_is_left_out_with_a_note(tmp_path):
 def test_the_daq_current_chooses_along_the_spectra_valley_but_does_not_overrule_them():
     """The electrical stage joins the DAQ's current admittance to the spectra (it pins their shallow valley). A current
     that agrees (the strip's own, 0.1 % noise) is joined and the spectra stay at their noise; a current read 20 ms late
-    (a potentiostat's stream put on the DAQ's rows) is a phase the electrical values cannot make: joined, it would put
-    the spectra tens of times beyond their noise, so the spectra's values are kept and the stage says so."""
+    (a potentiostat's stream put on the DAQ's rows) or through a 1 ms lag (a shunt amplifier's filter) is a phase the
+    electrical values cannot make: joined, it would put the spectra beyond their noise, so the spectra's values are kept
+    and the stage says so."""
     from types import SimpleNamespace
 
     import numpy as np
@@ -148,17 +149,18 @@ def test_the_daq_current_chooses_along_the_spectra_valley_but_does_not_overrule_
     truth = priors  # the fit starts there: what moves it is the data's noise and the current's delay
     f_eis, f_cur = np.logspace(-1, 4, 30), np.array([0.1, 0.3, 1.0, 3.0, 10.0, 20.0])
 
-    def data(delay_s: float) -> list:
+    def data(delay_s: float, lag_s: float = 0.0) -> list:
         out = []
         for p in pressures:
             z = impedance.impedance(2j * np.pi * f_eis, truth[p]) * (1 + 1e-3 * (rng.normal(size=f_eis.size) + 1j * rng.normal(size=f_eis.size)))
-            y = transfer.admittance_tf(2j * np.pi * f_cur, truth[p]) * np.exp(-2j * np.pi * f_cur * delay_s)
+            y = transfer.admittance_tf(2j * np.pi * f_cur, truth[p]) * np.exp(-2j * np.pi * f_cur * delay_s) / (1 + 2j * np.pi * f_cur * lag_s)
             y = y * (1 + 1e-4 * rng.normal(size=f_cur.size))
             out.append(SimpleNamespace(pressure_kPa=p, eis=(f_eis, z), current_lines=lambda y=y: (f_cur, y, 1e-4 * np.abs(y))))
         return out
 
-    for delay, agrees in ((0.0, True), (0.02, False)):
-        d = data(delay)
+    # the last: the current read through a 1 ms first-order lag (a shunt amplifier's RFI filter)
+    for delay, lag, agrees in ((0.0, 0.0, True), (0.02, 0.0, False), (0.0, 0.001, False)):
+        d = data(delay, lag)
         res, sigma, said = fit_electrical(d, priors)
         assert said is agrees
         eis_rms = np.sqrt(np.mean(Problem(priors, eis=d, sigma_eis=sigma).residual(res.params) ** 2))
