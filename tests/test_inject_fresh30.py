@@ -74,7 +74,7 @@ def _tri(period: float, amp: float, t0: float, n: int = 4000) -> inject.Rec:
     return _rec("free", t, 0 * t, d)
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""
@@ -373,7 +373,7 @@ def test_deterministic_per_seed(monkeypatch):
     monkeypatch.setattr(f30, "_clamp_law", clamp)
     monkeypatch.setattr(f30, "_station", station)
     monkeypatch.setattr(f30, "_map_through", through)
-    t2.check_deterministic(FORMS, every=True)
+    t2.check_deterministic(FORMS)
 
 
 def test_case_list():
