@@ -2,9 +2,10 @@
 diagnosed as a user would (``labrig export`` -> write -> ``labrig import`` -> ``labrig diagnose``).
 
 Each probe is a form a regression of the diagnosis once failed on: a fixture resonance outside the catalogue, a
-one-sided exponential (Tafel) electrolysis branch, hum on the drive monitor alone. The suite keeps the first
-(tests/test_diagnose_injected.py, on the suite's clean seed-1 sweep); the others cost a full diagnosis each (about
-35 core-seconds) and run here. The held-out sets (``bench/diagnose.py --set ...``) cover the families at large.
+one-sided exponential (Tafel) electrolysis branch, hum on the drive monitor alone, a reduction wave past an onset
+whose reactant the session spends (the DAQ's current carries it, the spectra do not). The suite keeps the first and
+the last (tests/test_diagnose_injected.py, on the suite's clean seed-1 sweep); the others cost a full diagnosis each
+(about 35 core-seconds) and run here. The held-out sets (``bench/diagnose.py --set ...``) cover the families at large.
 
 Run: python bench/diagnose_probes.py [--cache DIR] [--only NAME]
 Prints one line per probe (verdict, cause, form, held-out ratio, right or not); exit 1 when a probe is wrong.
@@ -51,6 +52,25 @@ def monitor_hum(s) -> None:
         r.cols["v_V"] = r.cols["v_V"] + 1.5e-3 * np.cos(w + 0.3) + 4e-4 * np.cos(3 * w + 1.1)
 
 
+def spent_reduction(s) -> None:
+    """A reduction wave past an onset (dissolved oxygen, or peroxide left from a cleaning, reduced on whichever face is
+    the cathode: half-wave at 0.3 V of drive, width 0.04 V, 0.4 mA at the first record) whose reactant the session
+    spends (first order, 1500 s): the DAQ's current at 0.5-1 V carries it, the analyser's 10 mV about 0 V does not
+    reach its onset. The current's records only."""
+    for r in s.series():
+        v, t = r.cols["v_V"], r.cols["t_s"]
+        i_lim = 4e-4 * np.exp(-(t - s.t0) / 1500.0)
+        r.cols["i_A"] = r.cols["i_A"] + i_lim * 0.5 * (np.tanh((v - 0.3) / 0.08) + np.tanh((v + 0.3) / 0.08))
+
+
+def spent_is_faradaic(out: dict) -> str:
+    if (out["verdict"], out["cause"]) != ("effect", "faradaic_current"):
+        return f"named {out['cause'] or out['verdict']}"
+    if out["gain"]["heldout_nrmse_ratio"] >= 0.5:
+        return f"form {out['extended']['form']}, ratio {out['gain']['heldout_nrmse_ratio']:.2f}"
+    return ""
+
+
 def outside_is_located(out: dict) -> str:
     top = out["residual"]["where"][0] if out["residual"]["where"] else {}
     if out["verdict"] != "unexplained" or out["cause"] is not None:
@@ -87,6 +107,7 @@ PROBES: dict[str, tuple[Callable, Callable[[dict], str]]] = {
     "fixture_resonance": (lambda s: inject.FORMS["unexplained"]["fixture_resonance"](s), outside_is_located),
     "tafel": (lambda s: inject.FORMS["faradaic_current"]["tafel"](s), tafel_is_faradaic),
     "monitor_hum": (monitor_hum, hum_is_mains),
+    "spent_reduction": (spent_reduction, spent_is_faradaic),
 }
 
 

@@ -84,7 +84,7 @@ def compute_diagnosis(path: str | Path, fitted: tuple | None = None) -> dict[str
     from labrig.diagnose.engine import baseline_specimens, diagnose
 
     sd, fit = fitted or load_and_fit(path, "diagnose")
-    out = jsonable(diagnose(sd, baseline_specimens(fit), fit.staged_valley))
+    out = jsonable(diagnose(sd, baseline_specimens(fit), fit.staged_valley, fit.spectra_specimens or None))
     if out["cause"]:  # the form the cause was found in (its family's: labrig.diagnose.families)
         out["extension"] = out["extended"].get("form_describe") or CATALOGUE[out["cause"]].describe
     return out

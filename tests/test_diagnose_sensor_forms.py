@@ -1,5 +1,6 @@
 """The sensor-side forms (issue 12): the sensor's own low-pass and the footprint read at its nearest point
-(labrig/diagnose/families.py), the rest curl drifting through the session (labrig/diagnose/arc.py)."""
+(labrig/diagnose/families.py), the rest curl drifting through the session (labrig/diagnose/arc.py); and a faradaic
+branch that fades with the session's clock, the family's one form in time (families.py)."""
 
 from types import SimpleNamespace
 
@@ -176,3 +177,23 @@ def test_each_channels_own_lag_rounds_the_current_spike_inside_the_averaged_bloc
     a = np.exp(-1.0 / (fs * 0.002))
     lagged = st.decimate(lfilter([1 - a], [1, -a], i_full))
     np.testing.assert_allclose(p.step_i[0][edge:edge + 3], lagged[edge:edge + 3], rtol=0.05)
+
+
+def test_a_fading_branch_is_the_steady_wave_scaled_by_the_sessions_clock():
+    """The faradaic family's ``fading`` form: the transport-limited wave's current on each sine record scaled by
+    exp(-k u), u its start over the session's span (a contaminant spent: peroxide decomposing on the platinum); at
+    k = 0 it is the steady wave, and k < 0 a branch that gathers. Current only: the displacement stays the baseline's."""
+    from labrig.diagnose.families import FAMILIES, _branch, _wave
+
+    ctx = _context(freqs=(0.1, 1.0), drive=0.8)
+    fading = next(e for e in FAMILIES["faradaic_current"] if e.form == "fading")
+    steady = _branch(_wave)
+    law = np.array([4e-4, 0.0, 0.05])
+    base = steady(np.array([0.0, 0.0, 0.05]), ctx).Hi  # a branch of no current: the baseline's admittance
+    wave = steady(law, ctx).Hi - base
+    u = np.array([s.t_start for s in ctx.sines]) / ctx.feats.t1
+    for k in (0.0, 3.0, -1.0):
+        p = fading.apply(np.r_[k, law], ctx)
+        np.testing.assert_allclose(p.Hi - base, wave * np.exp(-k * u), rtol=1e-9, atol=1e-15)
+        np.testing.assert_allclose(p.Hd, ctx.Hd, rtol=0, atol=0)
+    assert abs(wave[0]) > 0 and np.all(np.abs(fading.apply(np.r_[3.0, law], ctx).Hi - base)[1:] < np.abs(wave)[1:])

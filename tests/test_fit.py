@@ -171,3 +171,40 @@ def test_the_daq_current_chooses_along_the_spectra_valley_but_does_not_overrule_
             joined = Problem(priors, eis=d, cur=d, sigma_eis=sigma)
             forced = joined.minimize(alone.params)
             assert np.sqrt(np.mean(forced.residual[: joined.offsets[len(d)]] ** 2)) > 5 * CURRENT_AGREES  # the defect
+
+
+def test_a_branch_the_current_carries_beside_the_spectra_is_joined_and_the_spectras_own_values_kept_beside():
+    """A faradaic branch past its onset draws a current at the DAQ's 0.5-1 V that the analyser's small signal barely
+    sees: joined, the current moves the electrical values a long way (its RMS falls by more than CURRENT_MOVES) and
+    puts the spectra beyond their noise. The join is the stage's result (a drying moves both alike), and the spectra's
+    own values are kept beside it (``electrical_stage``'s fourth value), on which the diagnosis judges a branch of the
+    current; a clean current leaves none beside."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.fit.seed000 import CURRENT_AGREES, CURRENT_MOVES, current_agreement, electrical_stage, fit_impedance
+    from labrig.physics import impedance, presets, transfer
+
+    rng = np.random.default_rng(5)
+    pressures = (612.0, 1837.0, 3062.0)
+    priors = {p: presets.get("paper").specimen(p) for p in pressures}
+    f_eis, f_cur = np.logspace(-1, 4, 30), np.array([0.1, 0.3, 1.0, 3.0, 10.0, 20.0])
+
+    def data(branch_S: float) -> list:
+        out = []
+        for p in pressures:
+            z = impedance.impedance(2j * np.pi * f_eis, priors[p]) * (1 + 1e-3 * (rng.normal(size=f_eis.size) + 1j * rng.normal(size=f_eis.size)))
+            y = (transfer.admittance_tf(2j * np.pi * f_cur, priors[p]) + branch_S) * (1 + 1e-4 * rng.normal(size=f_cur.size))
+            out.append(SimpleNamespace(pressure_kPa=p, eis=(f_eis, z), current_lines=lambda y=y: (f_cur, y, 1e-4 * np.abs(y))))
+        return out
+
+    clean = electrical_stage(data(0.0), priors)
+    assert clean[2] is True and clean[3] is None
+    d = data(2e-3)  # 2 mS: 1 mA at 0.5 V, beside the strip's 10-30 mS at 0.1 Hz
+    res, sigma, agrees, alone = electrical_stage(d, priors)
+    _, spectra_rms, fall = current_agreement(d, priors, fit_impedance(d, priors)[0], sigma)
+    assert spectra_rms > CURRENT_AGREES and fall > CURRENT_MOVES  # the case: the join disputed, the current moved far
+    assert agrees is True and alone is not None
+    assert alone.params.valuesdict() == fit_impedance(d, priors)[0].params.valuesdict()
+    assert res.params.valuesdict() != alone.params.valuesdict()

@@ -376,6 +376,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([-0.4, 0.8, 1.0])]  # stop operators
     if ext.form == "transport":
         starts += [np.array([1e-4, 0.45, 0.04, 3.0, 3.0, 0.05])]  # a reduction wave at +-E_half (the first start: a couple at 0 V)
+    if ext.form == "fading":
+        starts += [np.array([1.0, 2e-4, 0.35, 0.05])]  # a reduction wave past an onset (the first start: a couple at 0 V)
     if ext.form == "nearest":
         starts += [np.array([-0.15])]  # the sensor on the other side
     if ext.form == "lowpass":
@@ -420,8 +422,9 @@ class _Scorer:
     """Fits and scores extensions on one round of forward selection (the reference refit made once)."""
 
     def __init__(self, ctx_fit: Context, ctx_held: Context, c0: float, n: int, base_held: dict, refit_mechanics: bool,
-                 valley: dict | None = None, wet: WetSession | None = None):
+                 valley: dict | None = None, wet: WetSession | None = None, spectra: tuple[Context, Context] | None = None):
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
+        self.spectra = spectra  # first round only: the contexts on the spectra's electrical values alone
         self.wet_session = wet  # first round only: a drying is also judged on the wet strip's refitted baseline
         self.valley = valley  # the electrical stage's loosest direction (nuisance.py)
         rms = self.base_rms = block_rms(base_held)
@@ -474,6 +477,16 @@ class _Scorer:
             # the best form's strength as a law of the clamp pressure (pressure_law.py), from where it stands
             law = self.score_form(name, scaled(best.ext, [best.params[p] for p in best.ext.params]))
             best = min(best, dataclasses.replace(law, params={**best.params, **law.params}), key=_choice)
+        if name == "faradaic_current" and self.spectra is not None and len(family) > 1:
+            # a branch of the current that joining the current to the spectra took into the electrical values (the
+            # join put the spectra beyond their noise): judged on the spectra's values too, where the linear path
+            # is the strip's and the branch is left to the form (fresh30's peroxide: 0.75 on the join, 0.13 there)
+            # the branch's gain is its own: its evidence and its ratio against that baseline too (the spectra's values
+            # alone may predict the held-out half better than the join, a drying's current above all)
+            # the spectra's values stand only where the branch reconciles the current with them: a current left
+            # structured on them (fresh30's tarnished contact pads, a resistance falling with the current: 7.5 x its
+            # accuracy on the current's FRF after the best branch) is a disagreement the branch does not explain
+            best = min([best, *(c for c in (self.on_spectra(name, ext) for ext in family) if self.reconciles(c))], key=_choice)
         if name == "dehydration" and self.wet_session is not None:
             # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py), in the
             # forms that predict best on the baseline; the baseline's absorbed drying reorders them (a form second on
@@ -488,6 +501,22 @@ class _Scorer:
                 first, on_wet, k0 = min(tried, key=lambda w: _choice(w[0]))
                 best = min([best, *(w[0] for w in tried), refine_loss(k0, on_wet, first)], key=_choice)
         return best
+
+    def on_spectra(self, name: str, ext: Extension) -> Candidate:
+        """The form fitted on the strip staged on the spectra's electrical values alone (``self.spectra``): DeltaBIC
+        against that baseline, the held-out ratio the worse of its error over this round's baseline's and over that one's."""
+        cf, ch = self.spectra
+        c_alt = chi2(blocks(baseline(cf), cf))[0]
+        h_alt = nrmse(blocks(baseline(ch), ch), self.where, self.accuracy)
+        c = self.fitted_on(name, ext, cf, ch)
+        ratio = max(c.heldout_ratio, c.heldout_nrmse / h_alt if h_alt > 0 else float("nan"))
+        return dataclasses.replace(c, delta_bic=c.delta_bic + self.c0 - c_alt, heldout_ratio=ratio, ratio_vs_reference=ratio,
+                                   params={**c.params, "spectra_electrical": 1.0}, refit=WetRefit(cf, ch))
+
+    def reconciles(self, c: Candidate) -> bool:
+        """Whether ``c`` leaves every current block of the held-out half within ``STRUCTURE_MARGIN`` of its accuracy."""
+        rms = block_rms(c.held)
+        return all(rms[k] <= STRUCTURE_MARGIN * self.accuracy.get(k, 1.0) for k in CURRENT_BLOCKS if k in rms)
 
     def wet(self, c: Candidate) -> tuple[Candidate | None, Callable[[float], Candidate | None], float] | None:
         """The drying form ``c`` (fitted on the baseline) fitted again on the seed-000 fit of the session corrected to
@@ -743,9 +772,11 @@ def split(feats: Features) -> tuple[set, set]:
     return {None, *ps}, {None, *ps}
 
 
-def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> dict[str, Any]:
+def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spectra_specimens: dict | None = None) -> dict[str, Any]:
     """Verdict, cause and gain for a session on top of the baseline strip per pressure (``baseline_specimens``);
-    ``valley``: the electrical stage's loosest direction (``Seed000Fit.staged_valley``, nuisance.py)."""
+    ``valley``: the electrical stage's loosest direction (``Seed000Fit.staged_valley``, nuisance.py);
+    ``spectra_specimens``: the strip staged on the spectra's electrical values alone, where the current was joined
+    against them (``Seed000Fit.spectra_specimens``): a faradaic branch is judged there too."""
     t0 = time.perf_counter()
     feats = extract(sd)
     fit_set, held_set = split(feats)
@@ -759,7 +790,11 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None) -> di
     accuracy = attainable_accuracy(ctx_held)  # the prior, or the session's own noise where that is larger
     where = missed(held_rms, accuracy)
     base_heldout = heldout_error(held_rms, where, accuracy)
-    scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley, WetSession(sd, fit_set, held_set))
+    spectra = None
+    if spectra_specimens:
+        sf = build_context(feats, spectra_specimens, fit_set)
+        spectra = (sf, sf if same else build_context(feats, spectra_specimens, held_set))
+    scorer = _Scorer(ctx_fit, ctx_held, c0, n, b_held, True, valley, WetSession(sd, fit_set, held_set), spectra)
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy, excess=EXCESS_EFFECT)
     rival = _rival(scorer, named, held_rms, accuracy)

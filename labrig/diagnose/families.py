@@ -8,7 +8,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | effect | forms |
 |---|---|
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
-| faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential |
+| faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential; Langmuir adsorption peaks; a transport-limited wave; a wave fading (or gathering) with the session's clock |
 | hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path |
 | time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
@@ -95,16 +95,21 @@ band_delay = _relax(lambda s, th: band_delay_tf(s, *th))
 # ------------------------------------------------------------------------------------------ faradaic branches
 
 
-def _branch(fun, lagged: bool = False, transport: bool = False):
+def _branch(fun, lagged: bool = False, transport: bool = False, fading: bool = False):
     """A parallel current branch i_b = fun(v, theta, dv/dt): harmonics 1-3 of each sine over one period of the
     measured drive's fundamental (numerically: any form), the step's current at the record's own rate (a charge
     drawn at the edge lands in the block it was drawn in), then block-averaged as the step is compared. ``lagged``:
     the branch sees the interface's potential, the drive through the double layer's charging, 1/(1 + s tau) with
     tau the last parameter (a Randles cell: the faradaic branch sits behind R_s, beside C_dl). ``transport``: the
     law's current passes through the diffusion layer's admittance (``diffusion_admittance``), its (tau_D, kappa)
-    the two parameters before tau."""
+    the two parameters before tau. ``fading``: the branch's strength follows the session's clock, exp(-k u) with u the
+    session's time over its span and k the first parameter (k > 0: a contaminant the electrodes spend or that
+    decomposes on the platinum, a tracer plated out; k < 0: one that builds up, carbon dioxide dissolving)."""
 
     def apply(th, ctx: Context):
+        (k_u, *th) = th if fading else (0.0, *th)
+        def strength(rec_t):  # rec_t: the record's times, called only when fading (a record without a clock otherwise)
+            return np.exp(-k_u * ctx.feats.time_share(rec_t())) if fading else 1.0
         law_th, tau = (th[:-1], th[-1]) if lagged else (th, 0.0)
         Y = None
         if transport:
@@ -114,7 +119,7 @@ def _branch(fun, lagged: bool = False, transport: bool = False):
         for k, s in enumerate(ctx.sines):
             a = _drive(s)
             ph = a / (1 + 2j * np.pi * s.f * tau) * np.exp(1j * _TH)
-            c = np.fft.fft(fun(ph.real, law_th, (2j * np.pi * s.f * ph).real))[1:4] * 2 / _N
+            c = np.fft.fft(fun(ph.real, law_th, (2j * np.pi * s.f * ph).real))[1:4] * 2 / _N * strength(lambda: s.t_start)
             if Y is not None:
                 c = c * Y(2j * np.pi * s.f * np.arange(1, 4))
             x = np.array([p.Hi[k] * a, p.hi[k, 0] * p.Hi[k] * a, p.hi[k, 1] * p.Hi[k] * a]) + c
@@ -124,7 +129,7 @@ def _branch(fun, lagged: bool = False, transport: bool = False):
             if tau > 0 and v.size > 1:
                 v = lfilter([-np.expm1(-1 / (st.fs_full * tau))], [1, -np.exp(-1 / (st.fs_full * tau))], v - v[0]) + v[0]
             dv = np.gradient(v) * st.fs_full if v.size > 1 else np.zeros_like(v)
-            i_b = st.decimate(fun(v, law_th, dv))
+            i_b = st.decimate(fun(v, law_th, dv) * strength(lambda: st.t_start + np.arange(v.size) / max(st.fs_full, 1e-9)))
             if Y is not None and i_b.size > 1:
                 i_b = timeresp.simulate(Y, i_b, st.fs_full / st.q)  # at the compared rate: Y is biproper, fast
             p.step_i[k] = p.step_i[k] + i_b
@@ -435,6 +440,12 @@ FAMILIES["faradaic_current"] += [
           _branch(_wave, lagged=True, transport=True),
           "a transport-limited wave (a redox couple at 0 V, or a reduction at +-E_half) through the Nernst layer's finite "
           "diffusion and the charge transfer: Cottrell spikes at the edges, a steady wave after"),
+    # a reactant spent (or gathered) over the session: the held-out pressures ran at other times, where a steady branch
+    # fitted on the others has the wrong strength (fresh30's peroxide left from a cleaning, decomposing on the platinum)
+    _form("faradaic_current", "fading", ("fade_per_span", "i_lim_A", "e_half_V", "wave_V"), (1.0, 2e-4, 0.0, 0.07),
+          (-3.0, -0.02, 0.0, 0.01), (12.0, 0.02, 1.5, 0.5), _branch(_wave, fading=True),
+          "a wave (a redox couple at 0 V, or a reduction at +-E_half) whose strength follows the session's clock, "
+          "exp(-k u): a contaminant the electrodes spend or that decomposes, or one that gathers (k < 0)"),
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "pi_drive", ("weight", "play_max_V", "gain"), (0.3, 0.3, 1.0), (-1.0, 1e-3, 0.2), (1.0, 1.5, 5.0), _pi_drive,

@@ -110,6 +110,9 @@ class Seed000Fit:
     # resistance R with the others following their correlation with it (a shallow valley with R_c and the CPEs),
     # within which the diagnosis lets the displacement FRF move the staged strip (labrig/diagnose/nuisance.py)
     staged_valley: dict[str, float] = field(default_factory=dict)
+    # the staged strip on the spectra's electrical values alone, where the current was joined though it put the spectra
+    # beyond their noise (``electrical_stage``): a faradaic branch is judged on it too (labrig/diagnose/engine.py)
+    spectra_specimens: dict[float, Specimen] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         def pe(x: ParamEstimate | None) -> float | None:
@@ -163,14 +166,22 @@ def fit_electrical(data: list[PressureData], priors: dict[float, Specimen]) -> t
     than ``CURRENT_MOVES``), the current holds what no electrical values make (a current read late, or through a
     filter of its own): the spectra's values are kept (the third value returned: False). A strip that changed between
     the spectra and the sines (a drying) moves both, and the current, which the values then follow, is joined."""
+    res, sigma, agrees, _ = electrical_stage(data, priors)
+    return res, sigma, agrees
+
+
+def electrical_stage(data: list[PressureData], priors: dict[float, Specimen]) -> tuple:
+    """``fit_electrical``'s result and, where the current was joined though it put the spectra beyond
+    ``CURRENT_AGREES`` (a faradaic branch, a drying), the spectra's fit alone (else None): the diagnosis judges a
+    branch of the current on those values too (``Seed000Fit.spectra_specimens``)."""
     alone, sigma = fit_impedance(data, priors)
     joined = current_agreement(data, priors, alone, sigma)
     if joined is None:
-        return alone, sigma, True
+        return alone, sigma, True, None
     res, spectra_rms, fall = joined
     if spectra_rms > CURRENT_AGREES and fall < CURRENT_MOVES:
-        return alone, sigma, False
-    return res, sigma, True
+        return alone, sigma, False, None
+    return res, sigma, True, (alone if spectra_rms > CURRENT_AGREES else None)
 
 
 def current_agreement(data: list[PressureData], priors: dict[float, Specimen], alone: lmfit.minimizer.MinimizerResult,
@@ -310,7 +321,7 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit,
     with_frf = [d for d in sd.pressures if (lines := d.frf_lines()) is not None and lines[0].size >= MIN_FRF_LINES]
     final = None
     if with_eis:
-        res, fit.eis_noise_rel, agrees = fit_electrical(with_eis, priors)
+        res, fit.eis_noise_rel, agrees, disputed = electrical_stage(with_eis, priors)
         if not agrees:
             fit.notes.append(f"the DAQ's current disagrees with the spectra (with it, the spectra beyond {CURRENT_AGREES:g} x their "
                              "noise): the electrical values are the spectra's alone")
@@ -323,6 +334,8 @@ def _run_stages(sd: SessionData, priors: dict[float, Specimen], fit: Seed000Fit,
         electrical = final if final is not None else _prior_electrical(priors)
         pars = fit_frf(with_frf, priors, electrical)
         fit.staged_specimens = _specimens(priors, pars)
+        if joint and with_eis and disputed is not None:
+            fit.spectra_specimens = _specimens(priors, fit_frf(with_frf, priors, disputed.params))
         if not joint:
             return pars
         if with_eis:
