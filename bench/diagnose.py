@@ -209,7 +209,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh28": "fresh28 held-out set (diagnosed once unseen at afed8f4; seen since)",
           "fresh29": "fresh29 held-out set (diagnosed once unseen at 0345989; seen since)",
           "fresh30": "fresh30 held-out set (diagnosed once unseen at 7425ca1; seen since)",
-          "fresh31": "fresh31 held-out set (unseen: no threshold saw it)"}
+          "fresh31": "fresh31 held-out set (diagnosed once unseen at 33f4138; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

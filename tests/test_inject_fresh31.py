@@ -71,7 +71,7 @@ def _step_rec(t0: float, amp: float, fs: float = 50.0, dur: float = 60.0, on: tu
     return _rec("free", t, v, d_per_v * v, p=p)
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""
@@ -401,7 +401,7 @@ def test_deterministic_per_seed(monkeypatch):
     monkeypatch.setattr(f31, "_station", station)
     monkeypatch.setattr(f31, "_map_through", through)
     monkeypatch.setattr(f31, "_through_x", through_x)
-    t2.check_deterministic(FORMS, every=True)
+    t2.check_deterministic(FORMS)
 
 
 def test_case_list():
