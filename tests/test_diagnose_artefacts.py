@@ -1,5 +1,6 @@
 """Recording artefacts (labrig/diagnose/artefacts.py): readings that leave their signal for a few samples, narrow
-lines that neither the drive nor the mains explains, a wander that does not repeat and noise that follows the drive, read off the sine records of the suite's clean paper sweep with
+lines that neither the drive nor the mains explains, a wander that does not repeat, noise that follows the drive and a
+load cell that carries it, read off the sine records of the suite's clean paper sweep with
 such things written into it. The forms here are the test's own (none is one of the held-out sets' structures)."""
 
 import copy
@@ -122,6 +123,36 @@ def test_noise_that_grows_with_the_range_follows_the_drives_phase(clean):
     assert "follows the drive's phase" in art.detail(a)
     b = art.artefacts(flat)
     assert not b["phase_noise"]["flagged"] and b["phase_noise"]["median"]["displacement"] < art.PHASE_NOISE / 2, b["phase_noise"]
+
+
+def test_a_load_cell_that_carries_the_current_is_found_and_a_creeping_clamp_is_not(clean):
+    """The drive current reaching the load cell's bridge through a shared ground (60 N/A of apparent force, through the
+    indicator's 0.2 s filter, rounded to its 0.01 kgf counts) is in every record that carries current: flagged, in most
+    of the sine records the force resolves, and said. A clamp force creeping by 4 % through each setting (the
+    catalogue's relaxation: a trend, not a line at the drive's frequency) and the clean sweep itself are not."""
+    from labrig.diagnose import load_cell
+
+    assert not load_cell.follows_drive(clean)["flagged"]
+    loop, creep = copy.deepcopy(clean), copy.deepcopy(clean)
+    for r in [r for b in loop.pressures for r in b.records if r.force_N.size]:
+        t = load_cell._force_times(r)
+        x = np.interp(t, r.t - r.t[0], r.i)
+        a = np.exp(-np.diff(t, prepend=t[0]) / 0.2)
+        seen = np.empty_like(x)
+        for k, (xk, ak) in enumerate(zip(x, a)):
+            seen[k] = xk if k == 0 else ak * seen[k - 1] + (1 - ak) * xk
+        r.force_N = np.round((r.force_N + 60.0 * seen) / 0.0980665) * 0.0980665
+    for b in creep.pressures:
+        t0 = min(r.t_start for r in b.records if np.isfinite(r.t_start)) if any(np.isfinite(r.t_start) for r in b.records) else 0.0
+        for r in b.records:
+            if r.force_N.size and np.isfinite(r.t_start):
+                t = r.t_start - t0 + load_cell._force_times(r)
+                r.force_N = np.round(r.force_N * (1 - 0.04 * (1 - np.exp(-t / 300.0))) / 0.0980665) * 0.0980665
+    a = art.artefacts(loop)
+    f = a["load_cell"]
+    assert f["flagged"] and a["flagged"] and len(f["records"]) >= 0.5 * f["read"] >= 10, f
+    assert "load cell" in art.detail(a) and art.level(a) > 1.0
+    assert not load_cell.follows_drive(creep)["flagged"]
 
 
 def long_sines(sd, seconds: float = 8.0):

@@ -55,6 +55,7 @@ from scipy.ndimage import median_filter
 from labrig.diagnose import spells
 from labrig.diagnose.arming import ARMING_Z, arming
 from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_lengths, wrapping
+from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
@@ -359,7 +360,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["clipped"] = clipping(sd, MIN_RECORDS)
     out["wrapped"] = wrapping(sd, MIN_RECORDS)
     out["arming"] = arming(sd, MIN_RECORDS)
-    out["flagged"] = bool(out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
+    out["load_cell"] = follows_drive(sd)  # the force reading carries the drive's line (load_cell.py)
+    out["flagged"] = bool(out["load_cell"]["flagged"] or out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
                           or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["wrapped"]["flagged"] or out["arming"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -368,7 +370,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "phase_noise": max((v for v in phase.values() if np.isfinite(v)), default=0.0),
                   "spell": _second(per, "spell"), "shift": _second(per, "shift"),
                   "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"],
-                  "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0}
+                  "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0,
+                  "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0}
     return out
 
 
@@ -385,7 +388,7 @@ def level(a: dict[str, Any]) -> float:
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
-                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE))
+                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -424,6 +427,11 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the {' and '.join(q['channels'])} noise follows the drive's phase (its variance up to "
                      f"{a['max']['phase_noise']:.1f}x from one part of the cycle to another, median over the sine records): a sensor's "
                      f"noise growing with the target's speed or range, a contact chattering while the strip moves")
+    if a.get("load_cell", {}).get("flagged"):
+        c = a["load_cell"]
+        parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "
+                     f"sign of the current's: the current or the drive reaching the bridge (a shared ground, a cable beside the "
+                     f"drive's leads), not a force the clamp or the strip makes")
     if a.get("arming", {}).get("flagged"):
         g = a["arming"]
         parts.append(f"the {' and '.join(g['channels'])} is not at rest for the first {g['window_s']:g} s of {_records(g['records'], 'step ')}, "
