@@ -10,7 +10,7 @@ Read on the sine records whose drive the force's sampling resolves (below a quar
 least): the force is fitted with a line (the clamp's creep within the record) and a sine and cosine at the drive's
 frequency, and the drive line's power is compared with the residual's, as the foreign lines are
 (``artefacts.LINE_POWER``): for white residuals the ratio exceeds 25 with probability e^-25 in one record. Flagged in
-half the records read or more (``RECORD_SHARE``; two at least), with one sign of the coupling (the line in phase or in
+half the records read or more (``RECORD_SHARE``; four at least), with one sign of the coupling (the line in phase or in
 antiphase with the current, within a quarter turn once the indicator's filter has lagged it): a ground loop has one
 sign and acts on every record, while a force still settling after a re-clamping (a trend no line removes) lights a
 record or two at a setting's start.
@@ -28,7 +28,7 @@ from labrig.records import SINE_KINDS
 LINE_POWER = 25.0  # the drive line's power over the residual's per-bin power (artefacts.LINE_POWER)
 MIN_CYCLES = 3.0
 MIN_SAMPLES = 24
-MIN_RECORDS = 2
+MIN_RECORDS = 4  # a setting's settling lights two records (fresh27's relaxing prestress, seen: 2 of the 4 a cycle-averaged log holds)
 # a wiring's coupling acts on every record that carries current; a force creeping or settling after a re-clamping
 # (a trend no line removes) lights a record or two at a setting's start: half the records read at least
 RECORD_SHARE = 0.5
