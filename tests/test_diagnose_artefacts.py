@@ -1,6 +1,6 @@
 """Recording artefacts (labrig/diagnose/artefacts.py): readings that leave their signal for a few samples, narrow
-lines that neither the drive nor the mains explains, a wander that does not repeat, noise that follows the drive and a
-load cell that carries it, read off the sine records of the suite's clean paper sweep with
+lines that neither the drive nor the mains explains, a wander that does not repeat, noise that follows the drive, a
+load cell that carries it and a reading reversed at some settings, read off the sine records of the suite's clean paper sweep with
 such things written into it. The forms here are the test's own (none is one of the held-out sets' structures)."""
 
 import copy
@@ -153,6 +153,36 @@ def test_a_load_cell_that_carries_the_current_is_found_and_a_creeping_clamp_is_n
     assert f["flagged"] and a["flagged"] and len(f["records"]) >= 0.5 * f["read"] >= 10, f
     assert "load cell" in art.detail(a) and art.level(a) > 1.0
     assert not load_cell.follows_drive(creep)["flagged"]
+
+
+def test_a_reading_reversed_at_some_settings_is_found_and_a_whole_reversed_session_is_not(clean):
+    """The laser moved to the strip's other face at a re-clamping: the later settings' FRF lines oppose the strip's own
+    phase while the first ones agree. Flagged, those settings named, and the verdict the recording's
+    (``engine._recording_decides``). A session reversed as a whole is the rig's convention (labrig.fit.polarity), and
+    the clean sweep agrees everywhere: neither is flagged."""
+    import dataclasses
+
+    from labrig.diagnose.engine import _recording_decides
+    from labrig.diagnose.reversed_blocks import reversed_blocks
+
+    def reverse(sd, blocks):
+        for b in blocks:
+            b.sines = [dataclasses.replace(x, displacement=-x.displacement) for x in b.sines]
+        return sd
+
+    ok = reversed_blocks(clean)
+    assert not ok["flagged"] and min(ok["agreement"].values()) > 0.5
+    whole = copy.deepcopy(clean)
+    whole = reverse(whole, whole.pressures)
+    assert not reversed_blocks(whole)["flagged"]
+    moved = copy.deepcopy(clean)
+    moved = reverse(moved, moved.pressures[2:])
+    r = reversed_blocks(moved)
+    assert r["flagged"] and r["reversed_kPa"] == sorted(b.pressure_kPa for b in moved.pressures[2:]), r
+    a = art.artefacts(moved)
+    assert a["flagged"] and "reversed" in art.detail(a)
+    quiet = {"flagged": False}
+    assert _recording_decides(quiet, quiet, a, []) and not _recording_decides(quiet, quiet, art.artefacts(clean), [])
 
 
 def long_sines(sd, seconds: float = 8.0):

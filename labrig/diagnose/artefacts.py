@@ -56,6 +56,7 @@ from labrig.diagnose import spells
 from labrig.diagnose.arming import ARMING_Z, arming
 from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_lengths, wrapping
 from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
+from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
 from labrig.estimate.session_data import SessionData, TimeRecord, sine_skip
@@ -361,7 +362,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["wrapped"] = wrapping(sd, MIN_RECORDS)
     out["arming"] = arming(sd, MIN_RECORDS)
     out["load_cell"] = follows_drive(sd)  # the force reading carries the drive's line (load_cell.py)
-    out["flagged"] = bool(out["load_cell"]["flagged"] or out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
+    out["reversed"] = reversed_blocks(sd)  # the reading's sign changed between the settings (reversed_blocks.py)
+    out["flagged"] = bool(out["load_cell"]["flagged"] or out["reversed"]["flagged"] or out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
                           or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["wrapped"]["flagged"] or out["arming"]["flagged"])
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -371,7 +373,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "spell": _second(per, "spell"), "shift": _second(per, "shift"),
                   "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"],
                   "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0,
-                  "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0}
+                  "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0,
+                  "reversed": 2.0 if out["reversed"]["flagged"] else 0.0}
     return out
 
 
@@ -388,7 +391,7 @@ def level(a: dict[str, Any]) -> float:
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
-                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE))
+                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0)))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -427,6 +430,11 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the {' and '.join(q['channels'])} noise follows the drive's phase (its variance up to "
                      f"{a['max']['phase_noise']:.1f}x from one part of the cycle to another, median over the sine records): a sensor's "
                      f"noise growing with the target's speed or range, a contact chattering while the strip moves")
+    if a.get("reversed", {}).get("flagged"):
+        r = a["reversed"]
+        parts.append(f"the displacement reads the strip's bend reversed at {', '.join(f'{p:g}' for p in r['reversed_kPa'])} kPa and as the "
+                     f"model does at the other settings (FRF phase agreement per setting {r['agreement']}): the sensor moved to the "
+                     f"strip's other face, or the strip clamped the other way round, at a re-clamping")
     if a.get("load_cell", {}).get("flagged"):
         c = a["load_cell"]
         parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "

@@ -760,8 +760,8 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
                        named: list[Candidate]) -> bool:
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
-    or carried round it."""
-    return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"]
+    or carried round it, a reading whose sign changed between the settings (reversed_blocks.py)."""
+    return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording.get("reversed", {}).get("flagged")
                 or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 
@@ -870,7 +870,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         # a model driven by it predicts what is not there (monitor.py)
         verdict, cause, confidence = "unexplained", None, 1.0
         named, accepted = [], []
-    elif _recording_decides(clock, monitor, recording, named):  # here: a channel clipped or wrapped
+    elif _recording_decides(clock, monitor, recording, named):  # here: a channel clipped or wrapped, or reversed at some settings
         # a channel held at the end of its range or carried round it: the features read there are the converter's, not
         # the strip's, and a cause named from them would be named from the clipping or the wrap (clipping.py)
         verdict, cause, confidence = "unexplained", None, 1.0

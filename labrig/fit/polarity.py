@@ -50,6 +50,25 @@ def line_agreement(sd: SessionData) -> float | None:
     return float(np.mean(cosines)) if len(cosines) >= MIN_LINES else None
 
 
+def block_agreements(sd: SessionData) -> dict[float, float]:
+    """Per pressure with ``MIN_LINES`` or more FRF lines: the mean cosine of the phase difference between its lines
+    and the prior strip's (``line_agreement`` block by block). A rig whose reading changed sign between the blocks (the
+    laser moved to the strip's other face at a re-clamping, the strip clamped again the other way round) gives both
+    signs; ``labrig.diagnose.reversed_blocks`` reads that."""
+    priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
+    out = {}
+    for d in sd.pressures:
+        lines = d.frf_lines()
+        if lines is None:
+            continue
+        f, h = lines[0], lines[1]
+        hm = transfer.frf(f, priors[d.pressure_kPa])
+        ok = (np.abs(h) > 0) & (np.abs(hm) > 0) & np.isfinite(h)
+        if ok.sum() >= MIN_LINES:
+            out[d.pressure_kPa] = float(np.mean(np.real(h[ok] * np.conj(hm[ok])) / np.abs(h[ok]) / np.abs(hm[ok])))
+    return out
+
+
 def step_agreement(sd: SessionData, channel: str = "d", window_s: float = STEP_WINDOW_S) -> float | None:
     """Mean over the voltage steps of sign(drive step) x sign(the ``channel``'s mean change over the step's first
     ``window_s`` from its pre-step level); None without a step that has a pre-step baseline."""
