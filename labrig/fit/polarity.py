@@ -34,27 +34,9 @@ CHARGE_WINDOW_S = 0.1  # a step's charging current, before a faradaic branch or 
 MIN_LINES = 3
 
 
-def line_agreement(sd: SessionData) -> float | None:
-    """Mean cosine of the phase difference between the measured displacement FRF and the prior strip's, over every
-    pressure's lines; None with fewer than ``MIN_LINES``."""
-    priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
-    cosines = []
-    for d in sd.pressures:
-        lines = d.frf_lines()
-        if lines is None:
-            continue
-        f, h = lines[0], lines[1]
-        hm = transfer.frf(f, priors[d.pressure_kPa])
-        ok = (np.abs(h) > 0) & (np.abs(hm) > 0) & np.isfinite(h)
-        cosines += list(np.real(h[ok] * np.conj(hm[ok])) / np.abs(h[ok]) / np.abs(hm[ok]))
-    return float(np.mean(cosines)) if len(cosines) >= MIN_LINES else None
-
-
-def block_agreements(sd: SessionData) -> dict[float, float]:
-    """Per pressure with ``MIN_LINES`` or more FRF lines: the mean cosine of the phase difference between its lines
-    and the prior strip's (``line_agreement`` block by block). A rig whose reading changed sign between the blocks (the
-    laser moved to the strip's other face at a re-clamping, the strip clamped again the other way round) gives both
-    signs; ``labrig.diagnose.reversed_blocks`` reads that."""
+def _line_cosines(sd: SessionData) -> dict[float, np.ndarray]:
+    """Per pressure with FRF lines: the cosine of the phase difference between each measured line and the prior
+    strip's (the paper's clamp law in the session's geometry)."""
     priors = prior_specimens(sd.sample, [d.pressure_kPa for d in sd.pressures])
     out = {}
     for d in sd.pressures:
@@ -64,9 +46,23 @@ def block_agreements(sd: SessionData) -> dict[float, float]:
         f, h = lines[0], lines[1]
         hm = transfer.frf(f, priors[d.pressure_kPa])
         ok = (np.abs(h) > 0) & (np.abs(hm) > 0) & np.isfinite(h)
-        if ok.sum() >= MIN_LINES:
-            out[d.pressure_kPa] = float(np.mean(np.real(h[ok] * np.conj(hm[ok])) / np.abs(h[ok]) / np.abs(hm[ok])))
+        out[d.pressure_kPa] = np.real(h[ok] * np.conj(hm[ok])) / np.abs(h[ok]) / np.abs(hm[ok])
     return out
+
+
+def line_agreement(sd: SessionData) -> float | None:
+    """Mean cosine of the phase difference between the measured displacement FRF and the prior strip's, over every
+    pressure's lines; None with fewer than ``MIN_LINES``."""
+    cosines = np.concatenate(list(_line_cosines(sd).values()) or [np.zeros(0)])
+    return float(np.mean(cosines)) if cosines.size >= MIN_LINES else None
+
+
+def block_agreements(sd: SessionData) -> dict[float, float]:
+    """Per pressure with ``MIN_LINES`` or more FRF lines: the mean cosine of the phase difference between its lines
+    and the prior strip's (``line_agreement`` block by block). A rig whose reading changed sign between the blocks (the
+    laser moved to the strip's other face at a re-clamping, the strip clamped again the other way round) gives both
+    signs; ``labrig.diagnose.reversed_blocks`` reads that."""
+    return {p: float(np.mean(c)) for p, c in _line_cosines(sd).items() if c.size >= MIN_LINES}
 
 
 def step_agreement(sd: SessionData, channel: str = "d", window_s: float = STEP_WINDOW_S) -> float | None:
