@@ -135,7 +135,7 @@ def test_a_load_cell_that_carries_the_current_is_found_and_a_creeping_clamp_is_n
     assert not load_cell.follows_drive(clean)["flagged"]
     loop, creep = copy.deepcopy(clean), copy.deepcopy(clean)
     for r in [r for b in loop.pressures for r in b.records if r.force_N.size]:
-        t = load_cell._force_times(r)
+        t = r.force_times
         x = np.interp(t, r.t - r.t[0], r.i)
         a = np.exp(-np.diff(t, prepend=t[0]) / 0.2)
         seen = np.empty_like(x)
@@ -146,7 +146,7 @@ def test_a_load_cell_that_carries_the_current_is_found_and_a_creeping_clamp_is_n
         t0 = min(r.t_start for r in b.records if np.isfinite(r.t_start)) if any(np.isfinite(r.t_start) for r in b.records) else 0.0
         for r in b.records:
             if r.force_N.size and np.isfinite(r.t_start):
-                t = r.t_start - t0 + load_cell._force_times(r)
+                t = r.t_start - t0 + r.force_times
                 r.force_N = np.round(r.force_N * (1 - 0.04 * (1 - np.exp(-t / 300.0))) / 0.0980665) * 0.0980665
     a = art.artefacts(loop)
     f = a["load_cell"]

@@ -425,6 +425,7 @@ class _Scorer:
                  valley: dict | None = None, wet: WetSession | None = None, spectra: tuple[Context, Context] | None = None):
         self.ctx_fit, self.ctx_held, self.c0, self.n = ctx_fit, ctx_held, c0, n
         self.spectra = spectra  # first round only: the contexts on the spectra's electrical values alone
+        self._spectra_base: tuple[float, float] | None = None
         self.wet_session = wet  # first round only: a drying is also judged on the wet strip's refitted baseline
         self.valley = valley  # the electrical stage's loosest direction (nuisance.py)
         rms = self.base_rms = block_rms(base_held)
@@ -506,12 +507,18 @@ class _Scorer:
         """The form fitted on the strip staged on the spectra's electrical values alone (``self.spectra``): DeltaBIC
         against that baseline, the held-out ratio the worse of its error over this round's baseline's and over that one's."""
         cf, ch = self.spectra
-        c_alt = chi2(blocks(baseline(cf), cf))[0]
-        h_alt = nrmse(blocks(baseline(ch), ch), self.where, self.accuracy)
+        c_alt, h_alt = self.spectra_baseline()
         c = self.fitted_on(name, ext, cf, ch)
         ratio = max(c.heldout_ratio, c.heldout_nrmse / h_alt if h_alt > 0 else float("nan"))
         return dataclasses.replace(c, delta_bic=c.delta_bic + self.c0 - c_alt, heldout_ratio=ratio, ratio_vs_reference=ratio,
                                    params={**c.params, "spectra_electrical": 1.0}, refit=WetRefit(cf, ch))
+
+    def spectra_baseline(self) -> tuple[float, float]:
+        """(chi2 on the fitted half, held-out NRMSE) of the strip on the spectra's values alone: once per scorer."""
+        if self._spectra_base is None:
+            cf, ch = self.spectra
+            self._spectra_base = (chi2(blocks(baseline(cf), cf))[0], nrmse(blocks(baseline(ch), ch), self.where, self.accuracy))
+        return self._spectra_base
 
     def reconciles(self, c: Candidate) -> bool:
         """Whether ``c`` leaves every current block of the held-out half within ``STRUCTURE_MARGIN`` of its accuracy."""

@@ -34,19 +34,13 @@ MIN_RECORDS = 4  # a setting's settling lights two records (fresh27's relaxing p
 RECORD_SHARE = 0.5
 
 
-def _force_times(r: TimeRecord) -> np.ndarray:
-    if r.force_t.size == r.force_N.size:
-        return np.asarray(r.force_t, float)
-    return np.linspace(0.0, float(np.ptp(r.t)), r.force_N.size)
-
-
 def drive_line(r: TimeRecord) -> dict[str, Any] | None:
     """The force's line at the record's drive frequency: its power over the residual's per-bin power, and its phase
     against the current's fundamental (cos: +1 in phase, -1 antiphase); None where the force cannot resolve it."""
     f0 = float(r.meta.get("frequency_Hz") or 0.0)
     if r.kind not in SINE_KINDS or f0 <= 0 or r.force_N.size < MIN_SAMPLES or r.t.size < 8:
         return None
-    tf = _force_times(r)
+    tf = r.force_times
     f = np.asarray(r.force_N, float)
     ok = np.isfinite(f) & np.isfinite(tf)
     tf, f = tf[ok], f[ok]

@@ -59,10 +59,16 @@ class TimeRecord:
         return float(1.0 / sample_spacing(self.t))
 
     @property
+    def force_times(self) -> np.ndarray:
+        """s from the record's start, one per force reading (spread evenly over the record where none were stored)."""
+        if self.force_t.size == self.force_N.size:
+            return np.asarray(self.force_t, float)
+        return np.linspace(0.0, float(np.ptp(self.t)), self.force_N.size)
+
+    @property
     def force_trend(self) -> ForceTrend:
         """Load-cell force during the record: mean (N), slope (N/s) and the slope's standard deviation."""
-        t = self.force_t if self.force_t.size == self.force_N.size else np.linspace(0.0, float(np.ptp(self.t)), self.force_N.size)
-        return force_trend(t, self.force_N)
+        return force_trend(self.force_times, self.force_N)
 
 
 @dataclass
