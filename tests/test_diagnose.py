@@ -544,6 +544,33 @@ def test_the_line_features_read_the_mains_harmonics_and_the_form_starts_from_the
     assert start[keys.index(("d", 50.0))] == 0.0
 
 
+def test_a_drive_harmonic_on_a_mains_line_is_not_read():
+    """A 20 Hz sine's third harmonic sits on the 60 Hz line (a 25 Hz sine's second on 50 Hz; where the record's rate
+    folds an order, where it lands): pickup there and the strip's harmonic are one reading, so that order's residual
+    is 0 whatever it holds; the orders off the lines keep theirs."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from labrig.diagnose import engine
+    from labrig.diagnose.features import _on_mains
+    from labrig.diagnose.catalogue import Prediction
+
+    assert _on_mains(20.0, 1000.0) == (False, True) and _on_mains(25.0, 1000.0) == (True, False)
+    assert _on_mains(10.0, 1000.0) == (False, False) and _on_mains(0.1, 1000.0) == (False, False)
+    assert _on_mains(40.0, 130.0) == (True, False)  # at 130 Hz, 80 Hz folds onto 50 Hz and 120 Hz onto 10 Hz
+    est = SimpleNamespace(displacement=np.array([1.0, 0.1, 0.2]), current=np.array([1.0, 0.1, 0.2]), disp_noise=1e-3,
+                          cur_noise=1e-3, H_disp=1.0, H_cur=1.0, noise_inflation=1.0, noise_dof=20)
+    sines = [SimpleNamespace(f=f, est=est, on_mains=_on_mains(f, 1000.0), Hd=1.0 + 0j, Hi=1.0 + 0j, pressure_kPa=1.0,
+                             harm=lambda w, k: complex(est.displacement[k - 1]), force_mean=np.nan) for f in (10.0, 20.0)]
+    ctx = SimpleNamespace(sines=sines, steps=[], lines=[], spectra=[], force_nominal=[0.0, 0.0])
+    pred = Prediction(Hd=np.ones(2, complex), Hi=np.ones(2, complex), hd=np.zeros((2, 2), complex), hi=np.zeros((2, 2), complex),
+                      force_rel=np.full(2, np.nan), step_d=[], step_i=[], line={}, line_level=False)
+    ev, rel = engine.blocks(pred, ctx)["harm_d"]
+    ev = ev[:4]  # the real parts: (10 Hz 2f, 10 Hz 3f, 20 Hz 2f, 20 Hz 3f)
+    assert ev[3] == 0.0 and rel[3] == 0.0 and all(abs(x) > 10 for x in ev[:3])
+
+
 def test_the_contact_hold_follows_the_tip_a_guide_lensing_and_a_floor_lifting_off():
     """The dry contact whose hold follows the tip (contact.py): against the sample-by-sample definition (the radius
     at the tip's new place), a guide loading with the bend reads d/(1 + c) on loading, sticks on turning and closes

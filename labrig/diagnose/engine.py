@@ -159,8 +159,10 @@ def _measured_sines(ctx: Context) -> tuple:
         sd = np.array([s.est.disp_noise for s in ctx.sines])
         si = np.array([s.est.cur_noise for s in ctx.sines])
         frf = tuple((key, me, _frf_sigma(me, sg), np.concatenate((np.abs(me), np.abs(me)))) for key, me, sg in (("frf_d", Hd_m, sd), ("frf_i", Hi_m, si)))
+        # a harmonic order on a mains line is not read (features.SineFeature.on_mains): its sigma infinite, its residual 0
+        hidden = np.array([s.on_mains for s in ctx.sines], bool).reshape(-1, 2)
         harm = tuple((key, which, np.array([[s.harm(which, 2), s.harm(which, 3)] for s in ctx.sines]),
-                      np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1).ravel())
+                      np.where(hidden, np.inf, np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1)).ravel())
                      for key, which, rel_noise in (("harm_d", "d", sd / np.abs(Hd_m)), ("harm_i", "i", si / np.abs(Hi_m))))
         return frf, harm, _force_rel(ctx)
 
@@ -200,7 +202,8 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
             out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real, r.imag)) / absme)
         for (key, which, me, sig), pr in zip(harm, (pred.hd, pred.hi)):
             r = (pr - me).ravel()
-            out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real, r.imag)) * 10)
+            seen = np.isfinite(sig)
+            out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real * seen, r.imag * seen)) * 10)
         r = pred.force_rel - rel
         ok = np.isfinite(r)
         out["force"] = (r[ok] / force_sig[ok], np.zeros(0))  # evidence only: not a signal error

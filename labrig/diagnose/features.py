@@ -42,6 +42,10 @@ class SineFeature:
     force_mean: float = float("nan")
     force_slope_sigma: float = float("nan")  # N/s: from the readings' scatter and the indicator's resolution
     bend_m: float = 0.0  # the mean bend the sine rides on, from the laser's rest reading at its pressure
+    # per harmonic order 2, 3: whether it lands (where it folds at the record's rate) within 2 Hz of a mains line, where
+    # pickup and the strip's harmonic are one reading (a 20 Hz sine's third at 60 Hz): not read, as a line the drive
+    # puts a harmonic on is not read as pickup (``_driven``)
+    on_mains: tuple[bool, bool] = (False, False)
 
     @property
     def Hd(self) -> complex:
@@ -209,6 +213,13 @@ def _driven(r: TimeRecord, f: float) -> bool:
     return bool(f_max) and float(r.meta.get("f_min_Hz", 0.0) or 0.0) - 2.0 <= f <= 3.0 * f_max + 2.0
 
 
+def _on_mains(f: float, fs: float) -> tuple[bool, bool]:
+    """Whether a sine's harmonics 2f and 3f fall (folded at the record's rate) within 2 Hz of a mains line."""
+    at = folded(f * np.array([2.0, 3.0]), fs)
+    near = np.abs(at[:, None] - np.array(LINE_HZ)[None, :]).min(axis=1) < 2.0
+    return bool(near[0]), bool(near[1])
+
+
 def _lines(t: np.ndarray, x: np.ndarray, fs: float, freqs) -> dict[float, tuple[float, float]]:
     """Per line frequency: (amplitude there, median amplitude of the neighbouring bins), from one amplitude-calibrated
     Hann spectrum of the record; (0, inf) for a line the record cannot resolve (within 1.1x of Nyquist)."""
@@ -276,7 +287,8 @@ def extract(sd: SessionData) -> Features:
             f = float(r.meta["frequency_Hz"])
             est = sine_estimate(r.t, r.v, r.i, r.d, f, *sine_cycles(r))
             amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
-            feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma, est.disp_mean - rest.get(p, 0.0)))
+            feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma, est.disp_mean - rest.get(p, 0.0),
+                                           _on_mains(f, r.fs)))
         elif r.kind == "step" and p not in first_step:
             first_step.add(p)
             q, (t, v, d, i) = _decimate(r, STEP_RATE_HZ)
