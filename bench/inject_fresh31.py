@@ -88,6 +88,32 @@ def _settings(s: Session) -> list[tuple[float, float]]:
     return sorted((setting(p, a), p) for p, a in _by_pressure_start(s).items())
 
 
+def _relays(state: np.ndarray, ev: np.ndarray) -> np.ndarray:
+    """Relays' states sample by sample: ``ev`` (samples, relays) holds 1 or -1 (or 0) where a relay is set and nan
+    where it holds; each starts from ``state`` (relays,)."""
+    ev = np.vstack([state[None, :], ev])
+    idx = np.where(np.isnan(ev), 0, np.arange(ev.shape[0])[:, None])
+    return ev[np.maximum.accumulate(idx, axis=0), np.arange(ev.shape[1])[None, :]][1:]
+
+
+def _first_mode(s: Session) -> Callable[[Rec], Callable[[np.ndarray], np.ndarray]]:
+    """Per record, the strip's first mode at its clamp pressure (labrig.physics.transfer.modal_set), normalised to 1
+    at rest: H(r)(s) for inject_fresh3._through_x."""
+    from labrig.physics import transfer
+
+    modes: dict[float, tuple[float, float]] = {}
+
+    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
+        p = float(r.entry["pressure_kPa"])
+        if p not in modes:
+            ms = transfer.modal_set(_spec(s, r))
+            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
+        w1, z1 = modes[p]
+        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
+
+    return H
+
+
 def _boxcar_late(t: np.ndarray, x: np.ndarray, lag: float, width: float) -> np.ndarray:
     """x averaged over [t - lag - width/2, t - lag + width/2] (its running integral interpolated, the record's first
     value held before its start)."""
@@ -228,8 +254,6 @@ def hy_squeezed_root_domains(s: Session) -> None:
     first mode (labrig.physics.transfer.modal_set, inject_fresh3._through_x); displacement only. Measured (s001_164)
     displacement RMS +2.8 % (residual 4.8 %, 150x its noise): the 1 V steps +0.08 mm by their plateaus' end (4.77-4.80
     mm for 4.69-4.72 clean)."""
-    from labrig.physics import transfer
-
     n = 12
     k = s.rng.uniform(0.04, 0.1)
     a = np.sort(s.rng.uniform(0.1, 0.5, n))
@@ -244,22 +268,10 @@ def hy_squeezed_root_domains(s: Session) -> None:
             state = np.zeros(n)  # the squeeze scrambled them
         th = a * (float(r.entry["pressure_kPa"]) / p_min) ** g
         ev = np.where(v[:, None] >= th[None, :], 1.0, np.where(v[:, None] <= -th[None, :], -1.0, np.nan))
-        ev = np.vstack([state[None, :], ev])
-        idx = np.where(np.isnan(ev), 0, np.arange(ev.shape[0])[:, None])
-        filled = ev[np.maximum.accumulate(idx, axis=0), np.arange(n)[None, :]][1:]
+        filled = _relays(state, ev)
         state, t_last = filled[-1].copy(), float(t[-1])
         bend[id(r)] = scale * filled.mean(axis=1)
-    modes: dict[float, tuple[float, float]] = {}
-
-    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
-        p = float(r.entry["pressure_kPa"])
-        if p not in modes:
-            ms = transfer.modal_set(_spec(s, r))
-            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
-        w1, z1 = modes[p]
-        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
-
-    moved = _through_x(s, bend, H, 2.0)
+    moved = _through_x(s, bend, _first_mode(s), 2.0)
     for r in s.series():
         r.cols["disp_m"] = r.cols["disp_m"] + moved[id(r)]
 

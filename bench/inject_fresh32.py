@@ -54,7 +54,7 @@ from inject_fresh22 import _table_map
 from inject_fresh25 import _setting_of
 from inject_fresh26 import _held_by, _later_setting, _split_noise
 from inject_fresh29 import _grid_lag, _logistic
-from inject_fresh31 import _on_grid, _settings
+from inject_fresh31 import _first_mode, _on_grid, _relays, _settings
 
 # the paper's strip 13 mm free (earlier sets used 14-29 and 31-45 mm, 30 mm is the paper preset itself and the seed-001
 # strip is 20 mm): its 1 V step peaks at 1.71 mm, well inside the laser's +-20 mm (2 mm/V on the DAQ's +-10 V) and 3000x
@@ -234,8 +234,6 @@ def hy_blister_snap_through(s: Session) -> None:
     110x its noise): the 1 V steps +0.11 mm on their plateaus (4.80-4.83 mm for 4.69-4.72 clean) and still +0.11 mm 2 s
     after their fall; the 1 V harmonics' gain 1.03-1.04; 8 of the 68 series touched (the 0.5 V sines reach no
     blister)."""
-    from labrig.physics import transfer
-
     n = 8
     big = _largest(s) or ref_disp(s)
     faces = np.where(s.rng.random(n) < 0.5, 1.0, -1.0)  # +1: the face a positive bend compresses
@@ -247,22 +245,10 @@ def hy_blister_snap_through(s: Session) -> None:
     for r in _chrono(s):
         c = faces[None, :] * r.cols["disp_m"][:, None]  # each blister's face compression
         ev = np.where(c > a_in[None, :], 1.0, np.where(c < a_out[None, :], 0.0, np.nan))
-        ev = np.vstack([state[None, :], ev])
-        idx = np.where(np.isnan(ev), 0, np.arange(ev.shape[0])[:, None])
-        filled = ev[np.maximum.accumulate(idx, axis=0), np.arange(n)[None, :]][1:]
+        filled = _relays(state, ev)
         state = filled[-1].copy()
         bend[id(r)] = filled @ g
-    modes: dict[float, tuple[float, float]] = {}
-
-    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
-        p = float(r.entry["pressure_kPa"])
-        if p not in modes:
-            ms = transfer.modal_set(_spec(s, r))
-            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
-        w1, z1 = modes[p]
-        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
-
-    moved = _through_x(s, bend, H, 2.0)
+    moved = _through_x(s, bend, _first_mode(s), 2.0)
     for r in s.series():
         r.cols["disp_m"] = r.cols["disp_m"] + moved[id(r)]
 

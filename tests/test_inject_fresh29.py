@@ -384,21 +384,7 @@ def test_deterministic_per_seed(monkeypatch):
     """Every form gives the same session twice from the same seed, and another from another (all of them: the newest
     set); the four forms whose helpers run the beam's transfer functions with their helpers stood in for by cheap
     readings of the same closures (the draws are what is checked)."""
-
-    def clamp(s_, rel):
-        for r in s_.series():
-            t = r.cols["t_s"]
-            r.cols["force_N"] = r.cols["force_N"] * rel(t, float(r.entry["pressure_kPa"]), float(t[0]))
-
-    def station(s_, frac, fa):
-        inject.map_disp(s_, lambda r, d: d * frac(r) ** 2 + fa)
-
-    def through(s_, H, memory_s):
-        inject.map_disp(s_, lambda r, d: d * abs(H(r)(np.array([2j * np.pi * 5.0]))[0]))
-
-    monkeypatch.setattr(f29, "_clamp_law", clamp)
-    monkeypatch.setattr(f29, "_station", station)
-    monkeypatch.setattr(f29, "_map_through", through)
+    t2.cheap_transfers(monkeypatch, f29, ("_clamp_law", "_station", "_map_through"))
     t2.check_deterministic(FORMS)
 
 

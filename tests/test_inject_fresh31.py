@@ -382,25 +382,7 @@ def test_deterministic_per_seed(monkeypatch):
     """Every form gives the same session twice from the same seed, and another from another (all of them: the newest
     set); the forms whose helpers run the beam's transfer functions with their helpers stood in for by cheap readings
     of the same closures (the draws are what is checked)."""
-
-    def clamp(s_, rel):
-        for r in s_.series():
-            t = r.cols["t_s"]
-            r.cols["force_N"] = r.cols["force_N"] * rel(t, float(r.entry["pressure_kPa"]), float(t[0]))
-
-    def station(s_, frac, fa):
-        inject.map_disp(s_, lambda r, d: d * frac(r) ** 2 + fa)
-
-    def through(s_, H, memory_s):
-        inject.map_disp(s_, lambda r, d: d * abs(H(r)(np.array([2j * np.pi * 5.0]))[0]))
-
-    def through_x(s_, bend, H, memory_s):
-        return {id(r): bend[id(r)] * abs(H(r)(np.array([2j * np.pi * 5.0]))[0]) for r in s_.series()}
-
-    monkeypatch.setattr(f31, "_clamp_law", clamp)
-    monkeypatch.setattr(f31, "_station", station)
-    monkeypatch.setattr(f31, "_map_through", through)
-    monkeypatch.setattr(f31, "_through_x", through_x)
+    t2.cheap_transfers(monkeypatch, f31)
     t2.check_deterministic(FORMS)
 
 
