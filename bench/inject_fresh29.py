@@ -100,6 +100,25 @@ def _exchanged(t: np.ndarray, t0: float, tau: float, t_end: float) -> np.ndarray
     return np.interp(np.asarray(t, float), tg, share, left=0.0)
 
 
+def _first_mode(s: Session) -> Callable[[Rec], Callable[[np.ndarray], np.ndarray]]:
+    """Per record, the strip's first mode at its clamp pressure (labrig.physics.transfer.modal_set), normalised to 1
+    at rest: H(r)(s) for inject_fresh3._through_x."""
+    from labrig.physics import transfer
+
+    modes: dict[float, tuple[float, float]] = {}
+
+    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
+        p = float(r.entry["pressure_kPa"])
+        if p not in modes:
+            ms = transfer.modal_set(_spec(s, r))
+            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
+        w1, z1 = modes[p]
+        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
+
+    return H
+
+
+
 # ------------------------------------------------------------------------------------------------ back relaxation
 
 
@@ -244,8 +263,6 @@ def hy_prussian_blue_layer(s: Session) -> None:
     V steps +0.24 mm (9.00-9.01 mm for 8.76-8.77 at their plateaus' end), their current's peak +1.9 mA; the 1 V
     harmonics' gain 1.118 (+3.3 deg) in the displacement, 1.085-1.090 (+2.6 deg) in the current; the 0.5 V 0.1 Hz sines'
     1.060 and 1.043-1.046; the 20 Hz sines' 0.99."""
-    from labrig.physics import transfer
-
     n = 10
     k_pb, q_pb, tau_s = s.rng.uniform(0.05, 0.15), s.rng.uniform(0.01, 0.04), lu(s.rng, 0.1, 0.5)
     c, h = s.rng.uniform(0.25, 0.75, n), s.rng.uniform(0.05, 0.15, n)
@@ -267,17 +284,7 @@ def hy_prussian_blue_layer(s: Session) -> None:
         diff = nb - na
         bend[id(r)] = scale * diff
         r.cols["i_A"] = r.cols["i_A"] + charge * np.diff(np.r_[prev[1] - prev[0], diff]) * r.fs
-    modes: dict[float, tuple[float, float]] = {}
-
-    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:  # the film's moment through the strip's first mode
-        p = float(r.entry["pressure_kPa"])
-        if p not in modes:
-            ms = transfer.modal_set(_spec(s, r))
-            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
-        w1, z1 = modes[p]
-        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
-
-    moved = _through_x(s, bend, H, 2.0)
+    moved = _through_x(s, bend, _first_mode(s), 2.0)  # the film's moment through the strip's first mode
     for r in s.series():
         r.cols["disp_m"] = r.cols["disp_m"] + moved[id(r)]
 

@@ -55,7 +55,7 @@ from inject_fresh22 import _table_map
 from inject_fresh24 import _by_pressure_start
 from inject_fresh25 import _setting_of
 from inject_fresh26 import _later_setting, _split_noise
-from inject_fresh29 import _grid_lag, _logistic
+from inject_fresh29 import _first_mode, _grid_lag, _logistic
 
 # the paper's strip 14 mm free (earlier sets used 15-29 and 31-45 mm, 30 mm is the paper preset itself and the seed-001
 # strip is 20 mm): its 1 V step peaks at 1.98 mm, well inside the laser's +-20 mm (2 mm/V on the DAQ's +-10 V) and 3600x
@@ -88,30 +88,12 @@ def _settings(s: Session) -> list[tuple[float, float]]:
     return sorted((setting(p, a), p) for p, a in _by_pressure_start(s).items())
 
 
-def _relays(state: np.ndarray, ev: np.ndarray) -> np.ndarray:
+def _relay_states(state: np.ndarray, ev: np.ndarray) -> np.ndarray:
     """Relays' states sample by sample: ``ev`` (samples, relays) holds 1 or -1 (or 0) where a relay is set and nan
     where it holds; each starts from ``state`` (relays,)."""
     ev = np.vstack([state[None, :], ev])
     idx = np.where(np.isnan(ev), 0, np.arange(ev.shape[0])[:, None])
     return ev[np.maximum.accumulate(idx, axis=0), np.arange(ev.shape[1])[None, :]][1:]
-
-
-def _first_mode(s: Session) -> Callable[[Rec], Callable[[np.ndarray], np.ndarray]]:
-    """Per record, the strip's first mode at its clamp pressure (labrig.physics.transfer.modal_set), normalised to 1
-    at rest: H(r)(s) for inject_fresh3._through_x."""
-    from labrig.physics import transfer
-
-    modes: dict[float, tuple[float, float]] = {}
-
-    def H(r: Rec) -> Callable[[np.ndarray], np.ndarray]:
-        p = float(r.entry["pressure_kPa"])
-        if p not in modes:
-            ms = transfer.modal_set(_spec(s, r))
-            modes[p] = (float(ms.omega[0]), float(ms.xi[0]))
-        w1, z1 = modes[p]
-        return lambda z: 1.0 / (1.0 + 2.0 * z1 * z / w1 + (z / w1) ** 2)
-
-    return H
 
 
 def _boxcar_late(t: np.ndarray, x: np.ndarray, lag: float, width: float) -> np.ndarray:
@@ -268,7 +250,7 @@ def hy_squeezed_root_domains(s: Session) -> None:
             state = np.zeros(n)  # the squeeze scrambled them
         th = a * (float(r.entry["pressure_kPa"]) / p_min) ** g
         ev = np.where(v[:, None] >= th[None, :], 1.0, np.where(v[:, None] <= -th[None, :], -1.0, np.nan))
-        filled = _relays(state, ev)
+        filled = _relay_states(state, ev)
         state, t_last = filled[-1].copy(), float(t[-1])
         bend[id(r)] = scale * filled.mean(axis=1)
     moved = _through_x(s, bend, _first_mode(s), 2.0)

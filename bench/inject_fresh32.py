@@ -54,7 +54,8 @@ from inject_fresh22 import _table_map
 from inject_fresh25 import _setting_of
 from inject_fresh26 import _held_by, _later_setting, _split_noise
 from inject_fresh29 import _grid_lag, _logistic
-from inject_fresh31 import _first_mode, _on_grid, _relays, _settings
+from inject_fresh29 import _first_mode
+from inject_fresh31 import _on_grid, _relay_states, _settings
 
 # the paper's strip 13 mm free (earlier sets used 14-29 and 31-45 mm, 30 mm is the paper preset itself and the seed-001
 # strip is 20 mm): its 1 V step peaks at 1.71 mm, well inside the laser's +-20 mm (2 mm/V on the DAQ's +-10 V) and 3000x
@@ -245,7 +246,7 @@ def hy_blister_snap_through(s: Session) -> None:
     for r in _chrono(s):
         c = faces[None, :] * r.cols["disp_m"][:, None]  # each blister's face compression
         ev = np.where(c > a_in[None, :], 1.0, np.where(c < a_out[None, :], 0.0, np.nan))
-        filled = _relays(state, ev)
+        filled = _relay_states(state, ev)
         state = filled[-1].copy()
         bend[id(r)] = filled @ g
     moved = _through_x(s, bend, _first_mode(s), 2.0)
