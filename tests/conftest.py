@@ -25,7 +25,7 @@ _bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed 
 _bench_state: dict = {}  # this process's CaseCache of the shared sweeps
 # the modules reading the shared sweeps that take longest in the suite, longest first (seconds on two workers, 2026-11-27:
 # 66, 34, 25, 22, 15): the others follow in file order
-_LONGEST_FIRST = ("test_diagnose_injected.py", "test_import_roundtrip.py", "test_diagnose_artefacts.py", "test_fit.py",
+_LONGEST_FIRST = ("test_diagnose_injected.py", "test_diagnose_spectra_branch.py", "test_import_roundtrip.py", "test_diagnose_artefacts.py", "test_fit.py",
                   "test_diagnose_valley.py")
 BENCH_TIMEOUT_S = 3600  # the test that first asks for the shared sweeps waits for all of them (~1 min on an idle 2-core machine, far longer at load 10)
 

@@ -2,10 +2,10 @@
 validation set's injector (bench/inject.py), imported and diagnosed as a user would. The whole validation set
 (every form x three seeds, structures outside the catalogue, protocol variants) is run by bench/diagnose.py, and the
 issue's further probes (an exponential electrolysis branch, hum on the drive monitor) by bench/diagnose_probes.py;
-here, on the suite's clean seed-1 sweep exported once: the structure outside the catalogue, a faradaic branch the
-spectra do not see (judged on their own electrical values), a moment of the step
+here, on the suite's clean seed-1 sweep exported once: the structure outside the catalogue, a moment of the step
 records the whole record's RMS dilutes (step_windows.py), a drive monitor that clips and a laser whose register wraps
-(clipping.py)."""
+(clipping.py). A faradaic branch the spectra do not see is tests/test_diagnose_spectra_branch.py (a module of its own:
+the suite's two workers share the end-to-end diagnoses)."""
 
 import json
 
@@ -44,19 +44,6 @@ def test_a_structure_outside_the_catalogue_is_unexplained_and_located(exported):
     write, check = probes.PROBES["fixture_resonance"]
     out = probes.diagnosed(exported, "fixture_resonance", write)
     assert check(out) == "", (out["verdict"], out["cause"], out["residual"])
-
-
-def test_a_spent_reduction_wave_is_faradaic_on_the_spectras_own_values(exported):
-    """A reduction wave past an onset whose reactant the session spends, in the DAQ's current alone (the analyser's
-    small signal about 0 V does not reach the onset): the join of the current and the spectra takes the branch into the
-    electrical values and puts the spectra beyond their noise, so the branch is judged on the spectra's values too, and
-    named there in the form that fades with the session's clock, its strength found."""
-    write, check = probes.PROBES["spent_reduction"]
-    out = probes.diagnosed(exported, "spent_reduction", write)
-    assert check(out) == "", (out["verdict"], out["cause"], out["residual"])
-    p = out["effects_detail"][0]["params"]
-    assert out["extended"]["form"] == "fading" and p.get("spectra_electrical") == 1.0
-    assert 2e-4 < p["i_lim_A"] < 8e-4 and 0.1 < p["e_half_V"] < 0.5  # 0.4 mA drawn, its half-wave at 0.3 V
 
 
 def meniscus_drag(s) -> None:
