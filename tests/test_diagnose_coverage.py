@@ -1,6 +1,6 @@
 """The diagnosis over the effect catalogue on the simulated bench, end to end (run -> session file -> fit ->
 diagnosis): two catalogue effects hidden in a paper sweep (a drift in session time, a memory read in the
-harmonics), and the clean bench with two seeds.
+harmonics), and the clean bench (seed 1; ten clean seeds are the tuning set's, bench/diagnose.py).
 
 The suite's fast subset of issue 6's and 12's coverage (with tests/test_diagnose.py's two effects in one sweep): the
 whole tuning set (every effect with three seeds, ten clean) and the held-out sets are measured by
@@ -18,7 +18,7 @@ from bench.coverage import confusion
 from mock_devices import scenarios
 
 EFFECTS = sorted(CATALOGUE)
-CLEAN_SEEDS = (1, 2)
+CLEAN_SEEDS = (1,)  # a second clean seed's diagnosis was ~30 s of the suite's CPU: the tuning set runs ten
 CASES = [("dehydration", 1), ("hysteresis", 1)] + [("none", s) for s in CLEAN_SEEDS]
 BENCH_CASES = CASES
 # Targets as in bench/diagnose.py: every effect named, the clean bench `none`, and the named extension at least
