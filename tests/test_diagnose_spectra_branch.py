@@ -5,19 +5,10 @@ clean seed-1 sweep exported once (bench/diagnose_probes.py ``spent_reduction``),
 A module of its own beside tests/test_diagnose_injected.py, so that the suite's two workers share their diagnoses
 (pytest-xdist hands out whole modules)."""
 
-import pytest
-
 from bench import diagnose_probes as probes
-from labrig.cli import main
+from test_diagnose_injected import exported  # noqa: F401  (the fixture: the suite's clean sweep exported, once per module)
 
 BENCH_CASES = [("none", 1)]  # shared with test_fit and the coverage (conftest)
-
-
-@pytest.fixture(scope="module")
-def exported(bench_sessions, tmp_path_factory):
-    folder = tmp_path_factory.mktemp("spectra_branch")
-    assert main(["export", bench_sessions.get(BENCH_CASES)[0].path, "--out", str(folder / "clean")]) == 0
-    return folder
 
 
 def test_a_spent_reduction_wave_is_faradaic_on_the_spectras_own_values(exported):
