@@ -363,8 +363,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["arming"] = arming(sd, MIN_RECORDS)
     out["load_cell"] = follows_drive(sd)  # the force reading carries the drive's line (load_cell.py)
     out["reversed"] = reversed_blocks(sd)  # the reading's sign changed between the settings (reversed_blocks.py)
-    out["flagged"] = bool(out["load_cell"]["flagged"] or out["reversed"]["flagged"] or out["bursts"]["flagged"] or out["lines"]["flagged"] or out["wander"]["flagged"] or out["phase_noise"]["flagged"]
-                          or out["spells"]["flagged"] or out["shifts"]["flagged"] or out["clipped"]["flagged"] or out["wrapped"]["flagged"] or out["arming"]["flagged"])
+    out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
+                                                      "clipped", "wrapped", "arming"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),

@@ -152,7 +152,7 @@ def _force_rel(ctx: Context) -> tuple[np.ndarray, np.ndarray]:
 
 def _measured_sines(ctx: Context) -> tuple:
     """What ``blocks`` compares the sine records' predictions with: ((key, measured, sigma, |measured| twice) of each
-    FRF, (key, which, measured (n, 2), sigma) of each harmonic block, (relative force, its sigma))."""
+    FRF, (key, which, measured (n, 2), sigma, read) of each harmonic block, (relative force, its sigma))."""
     def make() -> tuple:
         Hd_m = np.array([s.Hd for s in ctx.sines])
         Hi_m = np.array([s.Hi for s in ctx.sines])
@@ -161,8 +161,9 @@ def _measured_sines(ctx: Context) -> tuple:
         frf = tuple((key, me, _frf_sigma(me, sg), np.concatenate((np.abs(me), np.abs(me)))) for key, me, sg in (("frf_d", Hd_m, sd), ("frf_i", Hi_m, si)))
         # a harmonic order on a mains line is not read (features.SineFeature.on_mains): its sigma infinite, its residual 0
         hidden = np.array([s.on_mains for s in ctx.sines], bool).reshape(-1, 2)
+        seen = np.tile(~hidden.ravel(), 2)  # (real parts, imaginary parts), as ``blocks`` lays them out
         harm = tuple((key, which, np.array([[s.harm(which, 2), s.harm(which, 3)] for s in ctx.sines]),
-                      np.where(hidden, np.inf, np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1)).ravel())
+                      np.where(hidden, np.inf, np.repeat(_harm_sigma(rel_noise)[:, None], 2, axis=1)).ravel(), seen)
                      for key, which, rel_noise in (("harm_d", "d", sd / np.abs(Hd_m)), ("harm_i", "i", si / np.abs(Hi_m))))
         return frf, harm, _force_rel(ctx)
 
@@ -200,10 +201,9 @@ def blocks(pred: Prediction, ctx: Context) -> dict[str, tuple[np.ndarray, np.nda
         for (key, me, sig, absme), pr in zip(frf, (pred.Hd, pred.Hi)):
             r = pr - me
             out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real, r.imag)) / absme)
-        for (key, which, me, sig), pr in zip(harm, (pred.hd, pred.hi)):
+        for (key, which, me, sig, seen), pr in zip(harm, (pred.hd, pred.hi)):
             r = (pr - me).ravel()
-            seen = np.isfinite(sig)
-            out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real * seen, r.imag * seen)) * 10)
+            out[key] = (np.concatenate((r.real / sig, r.imag / sig)), np.concatenate((r.real, r.imag)) * seen * 10)
         r = pred.force_rel - rel
         ok = np.isfinite(r)
         out["force"] = (r[ok] / force_sig[ok], np.zeros(0))  # evidence only: not a signal error
@@ -771,7 +771,7 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py)."""
-    return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording.get("reversed", {}).get("flagged")
+    return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
                 or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 

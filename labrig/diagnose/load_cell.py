@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from labrig.estimate import demodulate
 from labrig.estimate.session_data import SessionData, TimeRecord
 from labrig.records import SINE_KINDS
 
@@ -62,11 +63,8 @@ def drive_line(r: TimeRecord) -> dict[str, Any] | None:
     line = 0.5 * float(coef[2] ** 2 + coef[3] ** 2)
     power = line / max(per_bin, q, 1e-300)
     # the current's fundamental at the same moments (the record's own clock: its t from the record's start)
-    ti = np.asarray(r.t, float) - float(r.t[0])
-    xi = ti - tf.mean()
-    Ai = np.column_stack([np.ones_like(xi), np.cos(w * xi), np.sin(w * xi)])
-    ci, *_ = np.linalg.lstsq(Ai, np.asarray(r.i, float), rcond=None)
-    zf, zi = complex(coef[2], -coef[3]), complex(ci[1], -ci[2])
+    zi = complex(demodulate(np.asarray(r.t, float) - float(r.t[0]) - tf.mean(), r.i, f0, 1, 0)[0])
+    zf = complex(coef[2], -coef[3])
     cos = float(np.real(zf * np.conj(zi)) / max(abs(zf) * abs(zi), 1e-300))
     return {"power": power, "phase_cos": cos}
 
