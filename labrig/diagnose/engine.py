@@ -24,7 +24,7 @@ from labrig.diagnose.line_levels import line_arrays, line_levels
 from labrig.diagnose.monitor import detail as monitor_detail, drive_monitor
 from labrig.diagnose.families import FAMILIES
 from labrig.diagnose.features import Features, extract, predict_sines, predict_step, specimen_for, step_timing_sigma
-from labrig.diagnose.nuisance import VALLEY_BOUND, Refit, refit
+from labrig.diagnose.nuisance import FIT_TOL, VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.drive_line import series_contexts, series_reading
@@ -412,7 +412,7 @@ def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tup
     first = [np.clip(ext.start(ctx), ext.lo, ext.hi)] if ext.start is not None else []
     for x0 in first + _starts(name, ext):
         try:
-            r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale="jac", max_nfev=60)
+            r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale="jac", max_nfev=60, ftol=FIT_TOL, xtol=FIT_TOL)
         except (ValueError, FloatingPointError):
             continue
         c = float(np.sum(r.fun**2))

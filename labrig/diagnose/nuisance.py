@@ -39,6 +39,11 @@ NUISANCE_BLOCKS = ("frf_d", "harm_d", "frf_i", "eis")  # what the mechanics (the
 STEP_BLOCKS = ("step_d", "step_i")  # and the step records, where a refit is asked to keep them (``refit(steps=True)``)
 LOG_BOUND_GLOBAL = 1.5  # alpha and gamma within a factor e^1.5 of the fitted values
 LOG_BOUND_KT = 0.7
+# least_squares stops when an iteration changes the cost by less than this share of it (or the parameters by this share
+# of their size): scipy's default, 1e-8, spends about half of each fit polishing a cost already within 1e-3 of its end
+# (logged on the tuning set's time-delay seed 1), and what the diagnosis reads from a fit, a held-out ratio compared at
+# 0.5 and a DeltaBIC at -25, does not move at 1e-4 (docs/diagnosis.md, "Cost")
+FIT_TOL = 1e-4
 VALLEY_BOUND = 3.0  # the electrical values within this many of R's standard errors along the valley
 
 
@@ -134,7 +139,7 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
             np.r_[th0, near.log_alpha, near.log_gamma, [near.valley_sd] * nv, [near.log_kt.get(p, 0.0) for p in p_fit]]
         x0 = np.clip(x0, lo, hi)
         try:
-            r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50)
+            r = least_squares(res, x0, bounds=(lo, hi), x_scale="jac", max_nfev=50, ftol=FIT_TOL, xtol=FIT_TOL)
         except (ValueError, FloatingPointError, OverflowError):
             continue
         if np.isfinite(r.cost) and r.cost < cost:
@@ -147,7 +152,7 @@ def refit(ext: Extension | None, ctx_fit: Context, ctx_held: Context, blocks_fn,
         def res_h(x: np.ndarray) -> np.ndarray:
             return _residual(ext, theta, ctx_held, la, lg, {**lkt, **dict(zip(p_held, x))}, blocks_fn, vs, valley)
 
-        rh = least_squares(res_h, np.zeros(len(p_held)), bounds=(-LOG_BOUND_KT, LOG_BOUND_KT), x_scale="jac", max_nfev=40)
+        rh = least_squares(res_h, np.zeros(len(p_held)), bounds=(-LOG_BOUND_KT, LOG_BOUND_KT), x_scale="jac", max_nfev=40, ftol=FIT_TOL, xtol=FIT_TOL)
         lkt.update(zip(p_held, map(float, rh.x)))
     same = ctx_held is ctx_fit
     cf = with_mechanics(ctx_fit, la, lg, lkt, valley_sd=vs, valley=valley)
