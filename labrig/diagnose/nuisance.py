@@ -42,7 +42,7 @@ LOG_BOUND_KT = 0.7
 # least_squares stops when an iteration changes the cost by less than this share of it (or the parameters by this share
 # of their size): scipy's default, 1e-8, spends about half of each fit polishing a cost already within 1e-3 of its end
 # (logged on the tuning set's time-delay seed 1), and what the diagnosis reads from a fit, a held-out ratio compared at
-# 0.5 and a DeltaBIC at -25, does not move at 1e-4 (docs/diagnosis.md, "Cost")
+# 0.5 and a DeltaBIC at -25, does not move at 1e-4 (docs/diagnosis.md, "The fits' stopping rule")
 FIT_TOL = 1e-4
 VALLEY_BOUND = 3.0  # the electrical values within this many of R's standard errors along the valley
 
