@@ -272,3 +272,46 @@ def test_a_vibration_line_in_an_import_is_unexplained_and_located(bench_sessions
     assert (out["verdict"], out["cause"]) == ("unexplained", None), (out["verdict"], out["cause"], out["residual"]["where"][:2])
     top = out["residual"]["where"][0]
     assert top["block"] == "recording" and any(abs(f - 23.1) < 0.1 for f in top["lines_Hz"]["displacement"]), top
+
+
+def test_lines_on_the_drives_lattice_are_told_from_lines_of_their_own():
+    """drive_locked.lattice_chance: a comb of the drive's harmonics, or sidebands a multiple of it apart about a
+    foreign clock's line, is beyond chance; lines at frequencies of their own are not; a segment of one cycle, where
+    every bin is a harmonic, and two lines say nothing."""
+    from labrig.diagnose.drive_locked import LOCK_P, lattice_chance
+
+    f0, cycles = 2.0, 40
+    df = f0 / cycles
+    assert lattice_chance([f0 * k for k in range(63, 75, 2)], f0, df) < LOCK_P  # a quantiser's odd harmonics
+    assert lattice_chance([115.05 + f0 * k for k in (-3, -2, -1, 1, 2, 3)], f0, df) < LOCK_P  # sidebands of a hold clock
+    rng = np.random.default_rng(3)
+    own = np.round(rng.uniform(20.0, 200.0, 8) / df) * df  # a fan, a pump, a transmitter: any bins
+    assert lattice_chance(list(own), f0, df) > LOCK_P
+    assert lattice_chance([f0 * k for k in range(63, 75, 2)], f0, f0) == 1.0  # one cycle: every bin is on the lattice
+    assert lattice_chance([130.0, 134.0], f0, df) == 1.0
+
+
+def test_a_comb_of_the_drives_harmonics_takes_the_verdict_and_a_line_of_its_own_does_not(clean):
+    """The strip driven through a quantiser after the drive's monitor: its error, periodic with the drive, reaches the
+    current as a comb of the drive's odd harmonics far above those a catalogued cause makes (orders 63-99 here). The
+    lines sit on the drive's lattice, the recording takes the verdict from any named cause (engine._recording_decides)
+    and the detail says so. A fan's line at a frequency of its own is foreign but not on the lattice, and leaves a
+    named cause standing."""
+    from labrig.diagnose.engine import _recording_decides
+
+    comb, fan = copy.deepcopy(clean), copy.deepcopy(clean)
+    rng = np.random.default_rng(5)
+    for r in sines(comb):
+        f0, fs = float(r.meta["frequency_Hz"]), 1.0 / float(np.median(np.diff(r.t)))
+        orders = [k for k in range(63, 100, 2) if k * f0 < 0.45 * fs]
+        r.i = r.i + sum(0.5 * noise(r.i) * np.sin(2 * np.pi * k * f0 * r.t + rng.uniform(0, 2 * np.pi)) for k in orders)
+    for r in sines(fan):
+        r.d = r.d + 3e-7 * np.sin(2 * np.pi * 37.3 * r.t + 0.4)
+    quiet = {"flagged": False}
+    a = art.artefacts(comb)
+    assert a["lines"]["flagged"] and a["locked"]["flagged"] and a["locked"]["channels"] == ["current"], a["locked"]
+    assert _recording_decides(quiet, quiet, a, [])
+    assert "drive's frequency lattice" in art.detail(a)
+    b = art.artefacts(fan)
+    assert b["lines"]["flagged"] and not b["locked"]["flagged"], b["locked"]
+    assert not _recording_decides(quiet, quiet, b, [])

@@ -55,6 +55,7 @@ from scipy.ndimage import median_filter
 from labrig.diagnose import spells
 from labrig.diagnose.arming import ARMING_Z, arming
 from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_lengths, wrapping
+from labrig.diagnose.drive_locked import lattice_chance, locked
 from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
 from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
@@ -309,6 +310,7 @@ def record_artefacts(r: TimeRecord) -> dict[str, Any] | None:
         sp, sp_t = spells.spell(quiet, t, f0, fs)
         sh, sh_t = spells.shift(slow, quiet, fs) if ch in spells.SHIFT_CHANNELS else (float("nan"), float("nan"))
         out[ch] = {"bursts": runs, "longest": longest, "z_max": zmax, "lines": lines, "line_max": top, "wander": _wander(e, fs, f0),
+                   "lattice_p": lattice_chance([hz for hz, _ in lines], f0, fs / e.size),
                    "phase_noise": _phase_noise(e_burst, t, f0, fs), "spell": sp, "spell_t": lead + sp_t, "shift": sh, "shift_t": lead + sh_t}
     return out
 
@@ -363,8 +365,9 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["arming"] = arming(sd, MIN_RECORDS)
     out["load_cell"] = follows_drive(sd)  # the force reading carries the drive's line (load_cell.py)
     out["reversed"] = reversed_blocks(sd)  # the reading's sign changed between the settings (reversed_blocks.py)
+    out["locked"] = locked(per, CHANNELS, MIN_RECORDS)  # foreign lines on the drive's lattice (drive_locked.py)
     out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
-                                                      "clipped", "wrapped", "arming"))
+                                                      "clipped", "wrapped", "arming", "locked"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -374,7 +377,7 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"],
                   "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0,
                   "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0,
-                  "reversed": 2.0 if out["reversed"]["flagged"] else 0.0}
+                  "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0}
     return out
 
 
@@ -391,7 +394,8 @@ def level(a: dict[str, Any]) -> float:
     m = a["max"]
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
-                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0)))
+                     m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0),
+                     m.get("locked", 0.0)))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -420,6 +424,12 @@ def detail(a: dict[str, Any]) -> str:
     if a["lines"]["flagged"]:
         fr = "; ".join(f"{ch} {', '.join(f'{x:g}' for x in v[:6])} Hz" for ch, v in a["lines"]["frequencies_Hz"].items())
         parts.append(f"narrow lines neither the drive's harmonics nor the mains' in {a['lines']['records']} sine records ({fr})")
+    if a.get("locked", {}).get("flagged"):
+        k = a["locked"]
+        parts.append(f"the {' and '.join(k['channels'])} lines sit on the drive's frequency lattice (its harmonics past those read, or lines a "
+                     f"multiple of it apart) in {k['records']} sine records (drives {', '.join(f'{x:g}' for x in k['frequencies_Hz'][:6])} Hz; "
+                     f"chance at most 1e{k['worst_log10_p']:.0f}): the reading of the drive's response passes through something "
+                     f"that is neither linear nor the strip's (a quantiser after the drive's monitor, a sensor's peak or sample hold)")
     if a["wander"]["flagged"]:
         w = a["wander"]
         parts.append(f"the {' and '.join(w['channels'])} wanders at {WANDER_BAND_HZ[0]:g}-{WANDER_BAND_HZ[1]:g} Hz up to "

@@ -770,9 +770,10 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
                        named: list[Candidate]) -> bool:
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
-    or carried round it, a reading whose sign changed between the settings (reversed_blocks.py)."""
+    or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
+    drive's lattice (drive_locked.py)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
-                or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
+                or recording["locked"]["flagged"] or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 
 def split(feats: Features) -> tuple[set, set]:
@@ -880,7 +881,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         # a model driven by it predicts what is not there (monitor.py)
         verdict, cause, confidence = "unexplained", None, 1.0
         named, accepted = [], []
-    elif _recording_decides(clock, monitor, recording, named):  # here: a channel clipped or wrapped, or reversed at some settings
+    elif _recording_decides(clock, monitor, recording, named):  # here: a channel clipped or wrapped, reversed at some settings, or lines on the drive's lattice
         # a channel held at the end of its range or carried round it: the features read there are the converter's, not
         # the strip's, and a cause named from them would be named from the clipping or the wrap (clipping.py)
         verdict, cause, confidence = "unexplained", None, 1.0
