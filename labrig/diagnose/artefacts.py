@@ -33,6 +33,10 @@ demodulated features almost untouched:
   or a transmitter switched on and off), or the current's level steps and stays (a rectified radio carrier, a
   switched amplifier range), inside a record, in ``MIN_RECORDS`` records or more.
 
+* **lines on the drive's lattice** (drive_locked.py): foreign lines that are the drive's harmonics past those read, or
+  a multiple of its frequency apart, beyond chance in ``MIN_RECORDS`` records or more: the channel's reading of the
+  drive's response is transformed (a quantiser after the monitor, a sensor's hold), and the recording takes the verdict.
+
 No threshold of the first three kinds was set on a set of sessions: they are tails of the noise's own law. Gaussian noise exceeds 6
 sigma with probability 2e-9 per sample; a periodogram bin of noise exceeds 25 times its mean with probability
 e^-25 = 1.4e-11 (chi-square with two degrees of freedom), so a session of 10^7 samples and 10^6 bins has about
