@@ -138,13 +138,17 @@ def write_import(s: Session, folder: Path) -> Path:
 # ------------------------------------------------------------------------------------------------ tools
 
 
-def lti(x: np.ndarray, fs: float, H: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
-    """x through H(s) from rest at the record's start (zero padding to twice its length: causal to that length)."""
+def lti(x: np.ndarray, fs: float, H: Callable[[np.ndarray], np.ndarray], dc_at_first_line: bool = False) -> np.ndarray:
+    """x through H(s) from rest at the record's start (zero padding to twice its length: causal to that length). The
+    zero-frequency bin is H at 1e-9 rad/s, or with ``dc_at_first_line`` H at the grid's first line: the strip's
+    displacement per volt grows without bound towards zero frequency (its double layer's constant-phase element keeps
+    taking charge), so a signal's mean is then answered as what its length can build, not as DC."""
     n = x.size
     m = 1 << int(math.ceil(math.log2(2 * n)))
     s = 2j * np.pi * np.fft.rfftfreq(m, 1.0 / fs)
-    h = H(s)
-    h[0] = H(np.array([1e-9 + 0j]))[0].real
+    with np.errstate(divide="ignore", invalid="ignore"):  # H at s = 0, replaced below
+        h = H(s)
+    h[0] = H(s[1:2] if dc_at_first_line else np.array([1e-9 + 0j]))[0].real
     return np.fft.irfft(np.fft.rfft(x, m) * h, m)[:n]
 
 

@@ -48,10 +48,10 @@ def _cat(s: Session, col: str) -> tuple[list[Rec], np.ndarray, list[int]]:
 
 
 def _through_x(s: Session, x: dict[int, np.ndarray], H: Callable[[Rec], Callable[[np.ndarray], np.ndarray]],
-               memory_s: float) -> dict[int, np.ndarray]:
+               memory_s: float, dc_at_first_line: bool = False) -> dict[int, np.ndarray]:
     """inject_fresh2._through for any per-record signal ``x`` (id(record) -> array): each record's x through H(r),
     preceded by memory_s of the session's x before it (linear across the rests, zero before the session) and
-    followed by its own last value held."""
+    followed by its own last value held (``dc_at_first_line``: inject.lti's)."""
     recs = _chrono(s)
     T = np.concatenate([r.cols["t_s"] for r in recs])
     X = np.concatenate([x[id(r)] for r in recs])
@@ -59,7 +59,7 @@ def _through_x(s: Session, x: dict[int, np.ndarray], H: Callable[[Rec], Callable
     for r in recs:
         xr, n, k = x[id(r)], x[id(r)].size, int(memory_s * r.fs)
         past = np.interp(r.cols["t_s"][0] - np.arange(k, 0, -1) / r.fs, T, X, left=0.0)
-        out[id(r)] = lti(np.r_[past, xr, np.full(n, xr[-1])], r.fs, H(r))[k : k + n]
+        out[id(r)] = lti(np.r_[past, xr, np.full(n, xr[-1])], r.fs, H(r), dc_at_first_line)[k : k + n]
     return out
 
 

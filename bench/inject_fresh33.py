@@ -128,39 +128,18 @@ def _modal_reading(s: Session, weights: Callable[[object], np.ndarray]) -> None:
     _map_through(s, H, 2.0)
 
 
-def _lti_floor(x: np.ndarray, fs: float, H: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
-    """inject.lti with the zero-frequency bin taken as H at the grid's first line instead of at 1e-9 rad/s: the
-    strip's displacement per volt grows without bound towards zero frequency (its double layer's constant-phase
-    element keeps taking charge), so a record's mean is answered as what its length can build, not as DC."""
-    n = x.size
-    m = 1 << int(math.ceil(math.log2(2 * n)))
-    z = 2j * np.pi * np.fft.rfftfreq(m, 1.0 / fs)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        h = H(z)
-    h[0] = H(z[1:2])[0].real
-    return np.fft.irfft(np.fft.rfft(x, m) * h, m)[:n]
-
-
 def _through_strip(s: Session, e: dict[int, np.ndarray]) -> tuple[dict[int, np.ndarray], dict[int, np.ndarray]]:
     """The strip's current and displacement answers to an extra drive e (volts per sample, id(record) -> array) the
     monitor does not see: through the preset's admittance and displacement transfer functions at each record's
-    pressure, each record preceded by 2 s of the session's e before it (linear across the rests, as
-    inject_fresh3._through_x) and followed by its last value held, the zero-frequency bin at the grid's first line
-    (``_lti_floor``)."""
+    pressure, each record preceded by 2 s of the session's e before it and followed by its last value held
+    (inject_fresh3._through_x), the zero-frequency bin at the grid's first line (inject.lti)."""
     from labrig.physics import transfer
 
-    recs = _chrono(s)
-    T = np.concatenate([r.cols["t_s"] for r in recs])
-    X = np.concatenate([e[id(r)] for r in recs])
-    di, dd = {}, {}
-    for r in recs:
-        sp = _spec(s, r)
-        xr, n, k = e[id(r)], e[id(r)].size, int(2.0 * r.fs)
-        past = np.interp(r.cols["t_s"][0] - np.arange(k, 0, -1) / r.fs, T, X, left=0.0)
-        full = np.r_[past, xr, np.full(n, xr[-1])]
-        di[id(r)] = _lti_floor(full, r.fs, lambda z: transfer.admittance_tf(z, sp))[k:k + n]
-        dd[id(r)] = _lti_floor(full, r.fs, lambda z: transfer.displacement_tf(z, sp))[k:k + n]
-    return di, dd
+    def tf(of: Callable) -> Callable[[Rec], Callable[[np.ndarray], np.ndarray]]:
+        return lambda r: (lambda z, sp=_spec(s, r): of(z, sp))
+
+    return (_through_x(s, e, tf(transfer.admittance_tf), 2.0, dc_at_first_line=True),
+            _through_x(s, e, tf(transfer.displacement_tf), 2.0, dc_at_first_line=True))
 
 
 def _late_by(r: Rec, late: np.ndarray) -> np.ndarray:

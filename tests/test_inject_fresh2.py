@@ -95,7 +95,7 @@ def cheap_transfers(monkeypatch, module, names=("_clamp_law", "_station", "_map_
     def through(s_, H, memory_s):
         inject.map_disp(s_, lambda r, d: d * abs(H(r)(np.array([2j * np.pi * 5.0]))[0]))
 
-    def through_x(s_, bend, H, memory_s):
+    def through_x(s_, bend, H, memory_s, dc_at_first_line=False):
         return {id(r): bend[id(r)] * abs(H(r)(np.array([2j * np.pi * 5.0]))[0]) for r in s_.series()}
 
     stand_in = {"_clamp_law": clamp, "_station": station, "_map_through": through, "_through_x": through_x}
