@@ -45,7 +45,7 @@ def lattice_chance(freqs: list[float], f0: float, df: float) -> float:
 def locked(per: list[dict], channels: tuple[str, ...], min_records: int) -> dict:
     """The session's records whose foreign lines sit on the drive's lattice (``lattice_chance`` below ``LOCK_P``), per
     channel, and whether they are ``min_records`` or more."""
-    hits = [(a, ch) for a in per for ch in channels if a[ch].get("lattice_p", 1.0) < LOCK_P]
+    hits = [(a, ch) for a in per for ch in channels if a[ch]["lattice_p"] < LOCK_P]
     records = len({id(a) for a, _ in hits})
     worst = min((a[ch]["lattice_p"] for a, ch in hits), default=1.0)
     return {"records": records, "channels": sorted({ch for _, ch in hits}),

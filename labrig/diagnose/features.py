@@ -26,6 +26,9 @@ LINE_HZ = tuple(sorted({base * n for base in MAINS_HZ for n in range(1, MAINS_OR
 # the channels a line is read on: (what it is, parameter prefix, parameter unit, SI per unit)
 LINE_CHANNELS = {"d": ("displacement", "disp", "um", 1e-6), "i": ("current", "cur", "uA", 1e-6), "v": ("drive monitor", "volt", "mV", 1e-3)}
 DRIVE_ORDERS = 20  # a drive harmonic within 2 Hz of a line, where it folds at the record's rate, hides it (it would read as pickup)
+# a drive harmonic and a mains line this close (where the record's rate folds them) are one reading: neither is read as
+# the other (``_driven``, ``_on_mains``); the multisine's band keeps the same margin
+SAME_LINE_HZ = 2.0
 
 
 @dataclass
@@ -202,21 +205,21 @@ def _force_slope(r: TimeRecord) -> tuple[float, float, float]:
 
 
 def _driven(r: TimeRecord, f: float) -> bool:
-    """Whether the record's own drive puts a line at ``f`` (within 2 Hz, where it folds at the record's rate), which
+    """Whether the record's own drive puts a line at ``f`` (within ``SAME_LINE_HZ``, where it folds at the record's rate), which
     would read as pickup: a sine's harmonics to ``DRIVE_ORDERS``; a multisine's band to three times its top (its
     lines and the third-order products a strip's nonlinearity makes of them: seed 001's 0.2-60 Hz multisine carries
     60 Hz itself)."""
     f_drive = float(r.meta.get("frequency_Hz", 0.0) or 0.0)
-    if f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < 2.0):
+    if f_drive and np.any(np.abs(folded(f_drive * np.arange(1, DRIVE_ORDERS + 1), r.fs) - f) < SAME_LINE_HZ):
         return True
     f_max = float(r.meta.get("f_max_Hz", 0.0) or 0.0)
-    return bool(f_max) and float(r.meta.get("f_min_Hz", 0.0) or 0.0) - 2.0 <= f <= 3.0 * f_max + 2.0
+    return bool(f_max) and float(r.meta.get("f_min_Hz", 0.0) or 0.0) - SAME_LINE_HZ <= f <= 3.0 * f_max + SAME_LINE_HZ
 
 
 def _on_mains(f: float, fs: float) -> tuple[bool, bool]:
-    """Whether a sine's harmonics 2f and 3f fall (folded at the record's rate) within 2 Hz of a mains line."""
+    """Whether a sine's harmonics 2f and 3f fall (folded at the record's rate) within ``SAME_LINE_HZ`` of a mains line."""
     at = folded(f * np.array([2.0, 3.0]), fs)
-    near = np.abs(at[:, None] - np.array(LINE_HZ)[None, :]).min(axis=1) < 2.0
+    near = np.abs(at[:, None] - np.array(LINE_HZ)[None, :]).min(axis=1) < SAME_LINE_HZ
     return bool(near[0]), bool(near[1])
 
 
