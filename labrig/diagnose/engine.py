@@ -28,7 +28,7 @@ from labrig.diagnose.nuisance import FIT_TOL, VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.drive_line import series_contexts, series_reading
-from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, rival_detail
+from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, VARYING_SERIES, rival_detail
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, reshaped, wet_contexts
@@ -718,7 +718,8 @@ def _rival_forms(structured: list[str], untouched: list[str]) -> list:
     lin = [set(structured) & b for b in LINEAR_BLOCKS]
     if all(lin) and set(untouched) & set().union(*lin):
         forms.append(SERIES_ELEMENT)
-    return forms
+    # a series element whose resistance varies makes both: where either is worth fitting, it is too
+    return forms + [VARYING_SERIES] if forms else forms
 
 
 def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], accuracy: dict[str, float]) -> Rival | None:

@@ -96,9 +96,73 @@ SERIES_ELEMENT = Extension("drive_path", ("series_ohm", "elastance_per_F"), (5.0
                            "before it: a sense resistor, a DC-blocking capacitor (outside the catalogue)", form="series_element")
 
 
+def _harmonic(x: np.ndarray, k: int) -> np.ndarray:
+    """The phasor X_k of x = Re(sum X_k e^{i k theta}) sampled at _N points a row (one cycle)."""
+    return 2 * np.fft.fft(x, axis=1)[:, k] / x.shape[1]
+
+
+def _drop(v: np.ndarray, i: np.ndarray, th) -> np.ndarray:
+    """The varying part of the series element's drop, (c_v v^2 + c_i (i / 1 mA)^2) i."""
+    _, cv, ci = th
+    return (cv * v**2 + ci * (1e3 * i) ** 2) * i
+
+
+def varying_series(th, ctx: Context):
+    """The strip behind a series element whose resistance varies with the voltage it switches and the current through
+    it, R(v, i) = R + c_v v^2 + c_i (i/1 mA)^2: an analogue switch's or a FET's on-resistance falling away from mid
+    supply (c_v < 0), a PTC fuse or a contact heating with the current (c_i > 0). The strip gets v_eff = G (v - e),
+    G = 1 / (1 + R Y), e = (c_v v^2 + c_i i^2) i to first order in e, i the current behind the linear part. Sines: e
+    over one cycle of the recorded drive gives the fundamental's change and a 3rd harmonic in both channels, through
+    Y(3 s) and H(3 s) as the drive's own would be; steps re-driven at the record's own rate with e from the step's
+    own current (the charging spike at full drive). Odd in the drive, but not a static map of it: the drop follows the
+    current, which leads the drive on a capacitive strip."""
+    r = th[0]
+    p = baseline(ctx)
+    if ctx.sines:
+        drv = np.array([_drive(s) for s in ctx.sines])
+        y = ctx.Hi
+        g = 1.0 / (1.0 + r * y)
+        wt = 2 * np.pi * np.arange(_N) / _N
+        turn = np.exp(1j * wt)[None, :]
+        v = (drv[:, None] * turn).real
+        i = ((y * g * drv)[:, None] * turn).real
+        e = _drop(v, i, th)
+        e1, e3 = _harmonic(e, 1), _harmonic(e, 3)
+        ok = np.abs(drv) > 0
+        safe = np.where(ok, drv, 1.0)
+        fac = np.where(ok, g * (1.0 - e1 / safe), g)
+        y3 = _y3(ctx)
+        third = np.where(ok, -e3 / (1.0 + r * y3) / (g * (safe - e1)), 0.0)
+        p.hd = p.hd.astype(complex) + np.stack([np.zeros_like(third), third * ctx.Hd3 / ctx.Hd], axis=1)
+        p.hi = p.hi.astype(complex) + np.stack([np.zeros_like(third), third * y3 / ctx.Hi], axis=1)
+        p.Hd, p.Hi = p.Hd * fac, p.Hi * fac
+    for k, st in enumerate(ctx.steps):
+        if st.fs_full <= 0 or st.v_full.size == 0:
+            continue
+        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
+        g = 1.0 / (1.0 + r * y)
+        grid = (nfft, sigma, [h * g, y * g])
+        (i,) = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [y * g]))
+        d, i = timeresp.respond(st.v_full - _drop(st.v_full, i, th), st.fs_full, grid)
+        p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
+    return p
+
+
+VARYING_SERIES = Extension("drive_path", ("series_ohm", "ohm_per_V2", "ohm_per_mA2"), (0.0, 0.0, 0.0), (-50.0, -200.0, -20.0),
+                           (500.0, 200.0, 20.0), varying_series,
+                           "the strip behind a series element whose resistance varies with the voltage and the current, "
+                           "R + c_v v^2 + c_i (i/1 mA)^2: an analogue switch's or FET's on-resistance, a PTC fuse or a "
+                           "heating contact, the DAQ recording the drive before it (outside the catalogue)",
+                           form="varying_series")
+
+
 def _what(r: dict) -> str:
     """What the strip saw, by the rival's form and parameters."""
     q = r["params"]
+    if r["form"] == VARYING_SERIES.form:
+        return (f"the strip sat behind a series element whose resistance varies ({q['series_ohm']:.3g} ohm "
+                f"{q['ohm_per_V2']:+.3g} ohm/V^2 {q['ohm_per_mA2']:+.3g} ohm/mA^2: an analogue switch's on-resistance, a "
+                f"PTC fuse, a heating contact, the DAQ recording the drive before it)")
     if r["form"] == SERIES_ELEMENT.form:
         c = "no capacitance" if q["elastance_per_F"] <= 0 else f"{1e3 / q['elastance_per_F']:.3g} mF"
         return (f"the strip sat behind a series element in the drive line ({q['series_ohm']:.3g} ohm, {c}: a sense resistor "
