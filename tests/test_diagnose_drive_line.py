@@ -18,7 +18,7 @@ from test_diagnose_wet_strip import F_EIS, F_SINE, P, _z
 from labrig.diagnose import engine
 from labrig.diagnose.drive_line import behind_series, series_reading
 from labrig.diagnose.features import Features, SpectrumFeature
-from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, rival_detail, series_element
+from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, VARYING_SERIES, rival_detail, series_element
 from labrig.estimate.session_data import PressureData, SessionData, TimeRecord
 from labrig.records import RecordKind
 
@@ -97,12 +97,13 @@ def _held(**levels):
 def test_the_series_element_is_fitted_only_where_one_channel_is_left():
     """The forms' gate: a harmonic block left opens the static map; both channels' linear response missed and one
     of those blocks left open the series element; one channel alone missed (a catalogued linear cause) neither."""
-    assert engine._rival_forms(["frf_d", "step_d", "frf_i", "step_i"], ["frf_i", "step_i"]) == [SERIES_ELEMENT]
-    assert engine._rival_forms(["frf_d", "step_d", "frf_i"], ["frf_i"]) == [SERIES_ELEMENT]
-    assert engine._rival_forms(["frf_d", "frf_i", "step_i"], ["frf_i"]) == [SERIES_ELEMENT]  # the current's step moved
+    both = [SERIES_ELEMENT, VARYING_SERIES]  # the varying element wherever a rival is fitted: it makes both signatures
+    assert engine._rival_forms(["frf_d", "step_d", "frf_i", "step_i"], ["frf_i", "step_i"]) == both
+    assert engine._rival_forms(["frf_d", "step_d", "frf_i"], ["frf_i"]) == both
+    assert engine._rival_forms(["frf_d", "frf_i", "step_i"], ["frf_i"]) == both  # the current's step moved
     assert engine._rival_forms(["frf_d", "frf_i", "step_i"], []) == []  # the named cause moves every block
     assert engine._rival_forms(["frf_d", "step_d"], ["frf_d", "step_d"]) == []  # the current not missed at all
-    assert engine._rival_forms(["frf_i", "harm_d", "harm_i"], ["harm_d"]) == [DRIVE_PATH]
+    assert engine._rival_forms(["frf_i", "harm_d", "harm_i"], ["harm_d"]) == [DRIVE_PATH, VARYING_SERIES]
 
 
 def test_the_series_element_takes_the_verdict_by_its_signature():
@@ -114,9 +115,10 @@ def test_the_series_element_takes_the_verdict_by_its_signature():
     relax = _cand("back_relaxation", 0.39, _held(frf_d=0.69, step_d=0.14, frf_i=0.21, step_i=1.21))
     good = engine.Candidate("drive_path", {"series_ohm": 0.0, "elastance_per_F": 5.0}, -2e4, 0.36, 0.36, 0.0, 0.36,
                             held=_held(frf_d=0.3, step_d=0.14, frf_i=0.21, step_i=1.1), ext=SERIES_ELEMENT)
-    r = engine._rival(SimpleNamespace(behind_series=lambda: good), [relax], base, acc)
+    weak = engine.Candidate("drive_path", {}, -1e3, 0.95, 0.95, 0.0, 0.95, held=relax.held, ext=VARYING_SERIES)
+    r = engine._rival(SimpleNamespace(behind_series=lambda: good, score_form=lambda name, ext: weak), [relax], base, acc)
     assert r is not None and r.lowered == ["step_i"] and r.report()["form"] == "series_element"
     detail = rival_detail(r.report())["detail"]
     assert "200 mF" in detail and "back_relaxation" in detail
     worse = engine.Candidate("drive_path", good.params, -2e4, 0.45, 0.45, 0.0, 0.45, held=good.held, ext=SERIES_ELEMENT)
-    assert engine._rival(SimpleNamespace(behind_series=lambda: worse), [relax], base, acc) is None
+    assert engine._rival(SimpleNamespace(behind_series=lambda: worse, score_form=lambda name, ext: weak), [relax], base, acc) is None

@@ -8,7 +8,7 @@ import pytest
 
 from labrig.diagnose import engine
 from labrig.diagnose.catalogue import Context, frf_by_pressure
-from labrig.diagnose.rivals import DRIVE_PATH, distorted_drive, drive_map, rival_detail
+from labrig.diagnose.rivals import DRIVE_PATH, VARYING_SERIES, distorted_drive, drive_map, rival_detail, varying_series
 from labrig.physics import presets, transfer
 
 
@@ -74,8 +74,8 @@ def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     def scorer_with(rival):
         def score_form(name, ext):
             fitted.append(name)
-            assert ext is DRIVE_PATH
-            return rival
+            assert ext in (DRIVE_PATH, VARYING_SERIES)  # the varying element is fitted wherever the map is
+            return rival if ext is DRIVE_PATH else _cand("drive_path", 0.9, _held(frf_i=5.0, harm_i=9.0, harm_d=4.0))
         return SimpleNamespace(score_form=score_form)
 
     rival = _cand("drive_path", 0.18, _held(frf_i=1.2, harm_i=1.1, harm_d=1.0))
@@ -90,3 +90,48 @@ def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     # only a gain left where it was (no harmonic block untouched): nothing for a static map to claim, not fitted
     leaves_gain = _cand("faradaic_current", 0.25, _held(frf_i=5.0, harm_i=1.0, harm_d=1.0))
     assert engine._rival(scorer_with(rival), [leaves_gain], base, acc) is None and not fitted
+
+
+def test_a_varying_series_element_changes_both_channels_by_the_current_it_carries():
+    """R + c_v v^2: no variation is the linear element (G = 1/(1 + R Y)); with c_v the drop c_v v^2 i, i = Y G v,
+    has the fundamental |a|^2 |Y G| c_v (e^{i psi}/2 + e^{-i psi}/4) a (psi the current's lead on the drive) and a
+    3rd harmonic, both channels alike at the fundamental, each through its own transfer at 3f. Not a static map of
+    the drive: the 3rd harmonic's phase follows the current's lead."""
+    ctx, sp = _context()
+    lin = varying_series(np.array([7.0, 0.0, 0.0]), ctx)
+    g = 1 / (1 + 7.0 * ctx.Hi)
+    np.testing.assert_allclose(lin.Hd, ctx.Hd * g, rtol=1e-12)
+    np.testing.assert_allclose(lin.hi, 0.0, atol=1e-15)
+    p = varying_series(np.array([0.0, -5.0, 0.0]), ctx)
+    a = np.array([0.05, 0.2, 1.0])
+    y = ctx.Hi
+    psi = np.angle(y)
+    e1 = -5.0 * a**2 * np.abs(y) * (0.5 * np.exp(1j * psi) + 0.25 * np.exp(-1j * psi))
+    np.testing.assert_allclose(p.Hd / ctx.Hd, 1 - e1, rtol=1e-9)
+    np.testing.assert_allclose(p.Hi / ctx.Hi, p.Hd / ctx.Hd, rtol=1e-12)
+    assert abs(p.Hd[2] / ctx.Hd[2]) > abs(p.Hd[0] / ctx.Hd[0]) > 1.0  # less resistance at the crest: more drive
+    y3 = transfer.admittance_tf(np.array([6j * np.pi]), sp)[0]
+    np.testing.assert_allclose(p.hi[:, 1] / p.hd[:, 1], (y3 / ctx.Hi) / (ctx.Hd3 / ctx.Hd), rtol=1e-9)
+    e3 = -5.0 * 0.25 * a**3 * np.abs(y) * np.exp(1j * (psi + 3 * 0.3))  # the drive's phase 0.3 rad, x3
+    np.testing.assert_allclose(p.hi[:, 1], -e3 * y3 / (ctx.Hi * a * np.exp(0.3j) * (1 - e1)), rtol=1e-9)
+    q = varying_series(np.array([0.0, 0.0, 20.0]), ctx)  # a heating element: more resistance at the current's crest
+    assert abs(q.Hd[2] / ctx.Hd[2]) < abs(q.Hd[0] / ctx.Hd[0]) < 1.0 + 1e-12
+
+
+def test_a_varying_element_on_a_step_record_acts_on_its_charging_spike():
+    """The drop follows the step's own current: at 1 V with c_v < 0 the strip gets more drive while the spike flows,
+    the current's peak larger than the linear element's by about |c_v| i of drive; at rest the two are equal."""
+    ctx, sp = _context()
+    fs = 1000.0
+    t = np.arange(2000) / fs
+    v = np.where(t >= 0.1, 1.0, 0.0)
+    st = SimpleNamespace(pressure_kPa=1837.0, fs_full=fs, v_full=v, decimate=lambda x: x)
+    ctx.steps, ctx.step_d, ctx.step_i = [st], [np.zeros_like(t)], [np.zeros_like(t)]
+    lin = varying_series(np.array([5.0, 0.0, 0.0]), ctx)
+    var = varying_series(np.array([5.0, -20.0, 0.0]), ctx)
+    k = int(np.argmax(lin.step_i[0]))
+    assert var.step_i[0][k] > lin.step_i[0][k] * 1.001
+    # at rest no drop (v = 0): equal but for the FFT grid's wrap of the later drop (1e-3 of the spike)
+    rest = t < 0.05  # (the grid rings just before the edge)
+    np.testing.assert_allclose(var.step_i[0][rest], lin.step_i[0][rest], atol=1e-3 * lin.step_i[0][k])
+    assert var.step_d[0][-1] > lin.step_d[0][-1]

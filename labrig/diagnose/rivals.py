@@ -102,14 +102,14 @@ def _harmonic(x: np.ndarray, k: int) -> np.ndarray:
 
 
 def _drop(v: np.ndarray, i: np.ndarray, th) -> np.ndarray:
-    """The varying part of the series element's drop, (c_v v^2 + c_i (i / 1 mA)^2) i."""
+    """The varying part of the series element's drop, (c_v v^2 + c_i (i / 100 mA)^2) i."""
     _, cv, ci = th
-    return (cv * v**2 + ci * (1e3 * i) ** 2) * i
+    return (cv * v**2 + ci * (10.0 * i) ** 2) * i
 
 
 def varying_series(th, ctx: Context):
     """The strip behind a series element whose resistance varies with the voltage it switches and the current through
-    it, R(v, i) = R + c_v v^2 + c_i (i/1 mA)^2: an analogue switch's or a FET's on-resistance falling away from mid
+    it, R(v, i) = R + c_v v^2 + c_i (i/100 mA)^2: an analogue switch's or a FET's on-resistance falling away from mid
     supply (c_v < 0), a PTC fuse or a contact heating with the current (c_i > 0). The strip gets v_eff = G (v - e),
     G = 1 / (1 + R Y), e = (c_v v^2 + c_i i^2) i to first order in e, i the current behind the linear part. Sines: e
     over one cycle of the recorded drive gives the fundamental's change and a 3rd harmonic in both channels, through
@@ -148,10 +148,10 @@ def varying_series(th, ctx: Context):
     return p
 
 
-VARYING_SERIES = Extension("drive_path", ("series_ohm", "ohm_per_V2", "ohm_per_mA2"), (0.0, 0.0, 0.0), (-50.0, -200.0, -20.0),
-                           (500.0, 200.0, 20.0), varying_series,
+VARYING_SERIES = Extension("drive_path", ("series_ohm", "ohm_per_V2", "ohm_at_100mA"), (0.0, 0.0, 0.0), (-50.0, -200.0, -200.0),
+                           (500.0, 200.0, 200.0), varying_series,
                            "the strip behind a series element whose resistance varies with the voltage and the current, "
-                           "R + c_v v^2 + c_i (i/1 mA)^2: an analogue switch's or FET's on-resistance, a PTC fuse or a "
+                           "R + c_v v^2 + c_i (i/100 mA)^2: an analogue switch's or FET's on-resistance, a PTC fuse or a "
                            "heating contact, the DAQ recording the drive before it (outside the catalogue)",
                            form="varying_series")
 
@@ -161,7 +161,7 @@ def _what(r: dict) -> str:
     q = r["params"]
     if r["form"] == VARYING_SERIES.form:
         return (f"the strip sat behind a series element whose resistance varies ({q['series_ohm']:.3g} ohm "
-                f"{q['ohm_per_V2']:+.3g} ohm/V^2 {q['ohm_per_mA2']:+.3g} ohm/mA^2: an analogue switch's on-resistance, a "
+                f"{q['ohm_per_V2']:+.3g} ohm/V^2 {q['ohm_at_100mA']:+.3g} ohm (i/100 mA)^2: an analogue switch's on-resistance, a "
                 f"PTC fuse, a heating contact, the DAQ recording the drive before it)")
     if r["form"] == SERIES_ELEMENT.form:
         c = "no capacitance" if q["elastance_per_F"] <= 0 else f"{1e3 / q['elastance_per_F']:.3g} mF"
