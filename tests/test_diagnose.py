@@ -683,3 +683,44 @@ def test_two_stage_sorption_runs_fast_then_creeps_and_holds_the_saturating_form(
     rate = np.gradient(x, u)
     assert rate[5] > 10 * rate[-1] > 0  # fast at first, still creeping at the end
     np.testing.assert_allclose(slow_forms.two_stage(u, (0.3, 7.0, 1.0)), slow_forms.saturating(u, (0.3,)), atol=1e-12)
+
+
+def test_a_clamp_breathing_with_the_rooms_cycle_predicts_the_blocks_it_was_not_fitted_on():
+    """The room's temperature cycle is one for the whole session: each block's force starts at its setting (its
+    first record, of any kind) and follows the cycle from there. Fitted on blocks 1 and 3 of a sweep whose force
+    breathes with a 15-minute cycle (and creeps a little), the form predicts blocks 2 and 4 within a tenth of their
+    swing; the cycle's period comes back within 5 %."""
+    from types import SimpleNamespace
+
+    import numpy as np
+    from scipy.optimize import least_squares
+
+    from labrig.diagnose import families, slow_forms
+    from labrig.diagnose.features import Features
+
+    ps, block_start = (600.0, 1800.0, 3000.0, 4200.0), (0.0, 1100.0, 2200.0, 3300.0)
+    feats = Features(t0=0.0, t1=4000.0)
+    feats.steps = [SimpleNamespace(pressure_kPa=p, t_start=t0) for p, t0 in zip(ps, block_start)]  # each block opens on a step
+    feats.sines = [SimpleNamespace(pressure_kPa=p, t_start=t0 + 60.0 + 40.0 * k, f=0.1 * (k + 1), force_mean=float("nan"))
+                   for p, t0 in zip(ps, block_start) for k in range(16)]
+    truth = np.array([0.02, -0.025, 900.0, 0.01, 300.0, 0.0, 0.0])
+
+    def ctx_of(sines):
+        n = len(sines)
+        return SimpleNamespace(feats=feats, sines=sines, steps=[], base=None, Hd=np.ones(n, complex), Hi=np.ones(n, complex),
+                               step_d=[], step_i=[], force_nominal=np.ones(n), cache={})  # force_mean nan: nothing to follow
+
+    def force(th, sines):
+        return slow_forms.room_cycle(np.asarray(th), ctx_of(sines)).force_rel
+
+    whole = force(truth, feats.sines)
+    first = [k for k, s in enumerate(feats.sines) if s.t_start - 60.0 in block_start]
+    assert np.ptp(whole) > 0.05 and np.all(np.abs(whole[first]) < np.ptp(whole) / 4)  # near the setting at each block's start
+    fit = [s for s in feats.sines if s.pressure_kPa in ps[0::2]]
+    held = [s for s in feats.sines if s.pressure_kPa in ps[1::2]]
+    ext = next(e for e in families.FAMILIES["clamp_relaxation"] if e.form == "room_cycle")
+    best = min((least_squares(lambda th: force(th, fit) - force(truth, fit), x0, bounds=(ext.lo, ext.hi))
+                for x0 in ([0.0, 0.0, 900.0, 0.0, 30.0, 0.0, 0.0], [0.0, 0.0, 1800.0, 0.0, 30.0, 0.0, 0.0])), key=lambda r: r.cost)
+    err = force(best.x, held) - force(truth, held)
+    assert np.max(np.abs(err)) < 0.1 * np.ptp(force(truth, held))
+    assert best.x[2] == pytest.approx(900.0, rel=0.05)

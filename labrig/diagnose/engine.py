@@ -395,6 +395,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([1.0, 0.2, 1.0, 0.1, -0.5, 200.0])]  # a loss building through each block
     if ext.form == "walking":
         starts += [np.array([0.97, -0.02, 0.5])]  # walking towards the tip
+    if ext.form == "room_cycle":
+        starts += [np.array([0.0, 0.0, per, 0.0, 30.0, 1.0, 0.0]) for per in (900.0, 3600.0)]  # the cycle's period: a and b are linear
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)

@@ -14,7 +14,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
-| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep; a screw shaken loose by the resonant records (Junker) |
+| clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep; a screw shaken loose by the resonant records (Junker); a clamp breathing with the room's temperature cycles |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
 The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``. The families whose cause sits at the clamp
@@ -502,6 +502,12 @@ FAMILIES["clamp_relaxation"] += [
           (0.05, 0.3, 0.3, 0.0, 30.0, 1.0, 0.0), (-0.2, 0.01, 0.0, -0.1, 0.5, -10.0, -10.0), (0.6, 10.0, 0.95, 0.2, 1e4, 10.0, 10.0),
           slow.shaken_loose, "a screw clamp loosened by the records that shake it, F = F0 (1 - r (1 - e^-D/D0) - r_c ln(1 + t/tau_c)), "
           "D the tip acceleration's dose past a slip threshold since the setting (Junker), beside the pads' creep; K_t bar and gain follow it"),
+    _form("clamp_relaxation", "room_cycle", ("cycle_sin", "cycle_cos", "cycle_period_s", "creep_share", "creep_tau_s",
+                                             "kt_exponent", "gain_exponent"),
+          (0.0, 0.0, 1800.0, 0.0, 30.0, 1.0, 0.0), (-0.3, -0.3, 300.0, -0.1, 0.5, -10.0, -10.0), (0.3, 0.3, 2e4, 0.2, 1e4, 10.0, 10.0),
+          slow.room_cycle, "a clamp breathing with the room's temperature cycles, F = F0 (1 - [a (sin wt - sin wt_s) + b (cos wt "
+          "- cos wt_s)] - r_c ln(1 + t/tau_c)): the screw's and the frame's metals expanding apart, one cycle through the session; "
+          "K_t bar and gain follow it"),
 ]
 FAMILIES["hysteresis"] += [
     _form("hysteresis", "flag_output", ("weight", "threshold_um", "reverse_share", "travel_um"), (0.05, 2000.0, 0.5, 5000.0),

@@ -172,6 +172,26 @@ def shaken_loose(th, ctx: Context):
     return p
 
 
+def room_cycle(th, ctx: Context):
+    """A clamp breathing with the room's temperature: an air conditioner or a heating cycles the room (periods of
+    minutes to an hour), the screw's and the frame's metals expand by different amounts and the preload follows, F/F0
+    = 1 - [a (sin w t - sin w t_s) + b (cos w t - cos w t_s)] - r_c ln(1 + (t - t_s)/tau_c), t the record's time on
+    the session's clock and t_s its block's setting (its first record of any kind: the operator set the force then),
+    beside the pads' creep. The cycle is the room's, one phase for every block: the held-out blocks sit elsewhere on
+    it. a and b enter linearly (one start per period, ``engine._starts``); K_t bar and the gain follow the force."""
+    a, b, period, r_c, tau_c, b_kt, b_gain = th
+    p = baseline(ctx)
+    w = 2 * np.pi / period
+    t_rig = np.array([s.t_start for s in ctx.sines], float)
+    since = ctx.feats.since_setting(t_rig)  # from the block's first record of any kind
+    t = t_rig - ctx.feats.t0
+    ts = t - since
+    cycle = a * (np.sin(w * t) - np.sin(w * ts)) + b * (np.cos(w * t) - np.cos(w * ts))
+    p.force_rel[:] = -cycle - r_c * np.log1p(since / tau_c)
+    follow_force(p, ctx, b_kt, b_gain)
+    return p
+
+
 def norton(th, ctx: Context):
     """Power-law (Norton) creep of the polymer under the pads at a fixed jaw gap: the creep rate goes as the stress to
     the n, d sigma/dt = -E A sigma^n, so sigma/sigma0 = (1 + (n - 1) t/tau_p)^(-1/(n - 1)) with tau_p = tau (p/p_top)^(1 - n):
