@@ -1,5 +1,5 @@
 """The sensor-side forms (issue 12): the sensor's own low-pass and the footprint read at its nearest point
-(labrig/diagnose/families.py), the rest curl drifting through the session (labrig/diagnose/arc.py); and a faradaic
+(labrig/diagnose/families.py), the rest curl drifting through the session and the knee (labrig/diagnose/arc.py); and a faradaic
 branch that fades with the session's clock, the family's one form in time (families.py)."""
 
 from types import SimpleNamespace
@@ -7,7 +7,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from labrig.diagnose.arc import curled_arc, drifting_arc
+from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
 from labrig.diagnose.families import _nearest, band_delay, band_delay_tf, lowpass, lowpass_tf
 from labrig.physics import presets, timeresp
@@ -197,3 +197,27 @@ def test_a_fading_branch_is_the_steady_wave_scaled_by_the_sessions_clock():
         np.testing.assert_allclose(p.Hi - base, wave * np.exp(-k * u), rtol=1e-9, atol=1e-15)
         np.testing.assert_allclose(p.Hd, ctx.Hd, rtol=0, atol=0)
     assert abs(wave[0]) > 0 and np.all(np.abs(fading.apply(np.r_[3.0, law], ctx).Hi - base)[1:] < np.abs(wave)[1:])
+
+
+def test_the_knee_is_the_cubic_at_its_lowest_power_and_spares_the_small_readings():
+    """y = d (1 - |d/(k L)|^n): at n = 2 the catalogue's cubic (c3 = 1/k^2), its describing function 1 - 3/4 c3 |a|^2/L^2
+    and a 3rd harmonic; at n = 12 a small sine is read as it stands and a large one compressed, a step's plateau
+    lowered only where it is large."""
+    ctx = _context(freqs=(0.5,), drive=1.0)
+    amp = np.abs(ctx.Hd)
+    cubic = knee(np.array([2.0, 2.0]), ctx)
+    c3 = 1 / 4.0
+    np.testing.assert_allclose(cubic.Hd / ctx.Hd, 1 - 0.75 * c3 * amp**2 / ctx.length**2, rtol=1e-9)
+    assert np.all(np.abs(cubic.hd[:, 1]) > 0)
+    small, large = _context(freqs=(0.5,), drive=0.05), _context(freqs=(0.5,), drive=1.0)
+    a_top = float(np.max(np.abs(large.Hd)))
+    th = np.array([1.2 * a_top / ctx.length, 12.0])  # folding just past the largest reading
+    g_small = np.abs(knee(th, small).Hd / small.Hd)
+    g_large = np.abs(knee(th, large).Hd / large.Hd)
+    np.testing.assert_allclose(g_small, 1.0, atol=1e-9)
+    assert np.min(g_large) < 0.99
+    t = np.linspace(0.0, 1.0, 101)
+    large.steps = [SimpleNamespace(t_start=0.0)]
+    large.step_d = [a_top * np.clip(5 * t, 0.0, 1.0)]
+    got = knee(th, large).step_d[0]
+    assert got[2] == pytest.approx(large.step_d[0][2], rel=1e-9) and got[-1] < 0.95 * a_top

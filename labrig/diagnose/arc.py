@@ -50,7 +50,7 @@ def curled_arc(th, ctx: Context):
     """The baseline read through ``curled_reading``: theta0 (rad, the curl's side by its sign) and the effective
     length's factor lambda (l = lambda L)."""
     theta0, lam = th
-    return _read_curled(ctx, lam * ctx.length, lambda t: theta0)
+    return read_through(ctx, lambda d, t: curled_reading(d, theta0, lam * ctx.length))
 
 
 def drifting_arc(th, ctx: Context):
@@ -58,18 +58,30 @@ def drifting_arc(th, ctx: Context):
     record's start as a share of the session's span: a strip that curls as it dries or takes a set, or a mount that
     tilts. Each record read at its own theta0."""
     theta_a, theta_b, lam = th
-    return _read_curled(ctx, lam * ctx.length, lambda t: theta_a + (theta_b - theta_a) * float(ctx.feats.time_share(t)))
+    return read_through(ctx, lambda d, t: curled_reading(d, theta_a + (theta_b - theta_a) * ctx.feats.time_share(t), lam * ctx.length))
 
 
-def _read_curled(ctx: Context, ell: float, theta_at) -> Prediction:
-    """The baseline read off an arc of effective length ell curled at theta_at(t_start) for each record: sines by the
-    map's describing function at their amplitude, steps through the map."""
+def knee(th, ctx: Context):
+    """The reading compressed by a power of itself, y = d (1 - |d/(k L)|^n), n 2-16 (n = 2: the catalogue's cubic, c3
+    = 1/k^2): a bend that stiffens sharply towards its largest (the arc's projection with a stiffening root, a strip
+    meeting its electrode's or a stop's limit) or a reading that saturates near its range's end (a sensor's output
+    stage or an input clamp): nothing at the small readings, a knee at the top. k L is where the reading would fold
+    (the knee's scale: the power alone would need strengths of 1e7 at n = 16)."""
+    k, n = th
+    scale = k * ctx.length
+    return read_through(ctx, lambda d, t: d * (1.0 - np.abs(d / scale) ** n))
+
+
+def read_through(ctx: Context, reading) -> Prediction:
+    """The baseline read through a static map ``reading(d, t)`` of the displacement (t the record's start on the rig's
+    clock: a map that changes through the session), unit slope at d = 0: sines by the map's describing function at
+    their amplitude, steps through the map."""
     p = baseline(ctx)
     if ctx.sines:
         a1 = p.Hd * np.array([_drive(s) for s in ctx.sines])
         amp, phase = np.abs(a1), np.exp(1j * np.angle(a1))
-        theta0 = np.array([theta_at(s.t_start) for s in ctx.sines], float)[:, None]
-        c = cosine_harmonics(lambda x: curled_reading(x, theta0, ell), amp, _GRID)
+        t = np.array([s.t_start for s in ctx.sines], float)[:, None]
+        c = cosine_harmonics(lambda x: reading(x, t), amp, _GRID)
         c1 = np.where(np.abs(c[:, 0]) > 0, c[:, 0], 1.0)
         g = np.where(amp > 0, c1 / np.where(amp > 0, amp, 1.0), 1.0)
         p.hd = p.hd.astype(complex)
@@ -77,5 +89,5 @@ def _read_curled(ctx: Context, ell: float, theta_at) -> Prediction:
         p.hd[:, 1] = p.hd[:, 1] + c[:, 2] / c1 * phase**2
         p.Hd = p.Hd * g
     for k, (st, d) in enumerate(zip(ctx.steps, p.step_d)):
-        p.step_d[k] = curled_reading(d, theta_at(st.t_start), ell)
+        p.step_d[k] = reading(d, st.t_start)
     return p

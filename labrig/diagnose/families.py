@@ -15,6 +15,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
 | clamp_relaxation | exponential; log time; power of time (Nutting); two arms (generalised Maxwell); Norton creep; a screw shaken loose by the resonant records (Junker); a clamp breathing with the room's temperature cycles |
+| large_deflection | the arc's cubic projection; the arc read around a rest curl (even and odd); the curl drifting through the session; a knee, the reading compressed by a power of itself |
 | mains_pickup | 50/60 Hz lines of constant amplitude; their harmonics to the 7th per channel; the same at a level of each record's own (a load switched on and off, a coupling that changes) |
 
 The slow effects' time shapes (drying, clamp creep) are in ``slow_forms``. The families whose cause sits at the clamp
@@ -29,7 +30,7 @@ from scipy.signal import lfilter
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read)
 from labrig.diagnose import contact, flag, slow_forms as slow, station
-from labrig.diagnose.arc import curled_arc, drifting_arc
+from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ, specimen_for, step_grid
 from labrig.physics import timeresp
 
@@ -529,6 +530,9 @@ FAMILIES["large_deflection"] += [
     _form("large_deflection", "drifting_curl", ("theta_start_rad", "theta_end_rad", "length_factor"), (0.1, 0.3, 1.0), (-1.2, -1.2, 0.02),
           (1.2, 1.2, 5.0), drifting_arc, "the curled arc with its rest curl moving through the session, theta0 from theta_start "
           "to theta_end: a strip curling as it dries or takes a set"),
+    _form("large_deflection", "knee", ("fold_over_length", "knee_power"), (1.0, 4.0), (0.02, 2.0), (50.0, 16.0), knee,
+          "the reading compressed by a power of itself, y = d (1 - |d/(k L)|^n): a bend stiffening sharply towards its largest, "
+          "a reading saturating near its range's end (n = 2: the cubic)"),
 ]
 _MAINS_KEYS = [(ch, f) for ch in LINE_CHANNELS for f in LINE_HZ]
 _MAINS_SCALE = np.array([LINE_CHANNELS[ch][3] for ch, _ in _MAINS_KEYS])
