@@ -479,6 +479,30 @@ def test_a_block_no_candidate_moves_does_not_hide_the_signature():
     assert rank(linear, memory, mains)[0] == "back_relaxation"  # now no candidate moves every contested block
 
 
+def test_a_dent_in_a_block_no_candidate_removes_does_not_contest_it():
+    """A block one candidate dents by a few per cent of its level and none removes a tenth of its excess (a gauge's
+    coupling on a displacement the baseline misses for another reason, beside a branch of the current: fresh33's
+    silver contact) is no signature: the better prediction ranks first. Where the dent is a real share of the
+    block's excess, the block is contested and the candidate that leaves it exactly ranks after."""
+    import numpy as np
+
+    from labrig.diagnose.engine import CONTEST_SHARE, Candidate, _significant
+
+    acc = {"harm_i": 1.0, "step_d": 1.0}
+
+    def held(harm, step):
+        return {"harm_i": (np.full(10, harm), None), "step_d": (np.full(10, step), None)}
+
+    base = {"harm_i": 289.0, "step_d": 59.3}
+    branch = Candidate("faradaic_current", {}, -5000.0, 1.0, 0.377, 0.0, 0.377, held=held(77.0, 59.3))
+    gauge = Candidate("strain_resistance", {}, -5000.0, 1.0, 0.391, 0.0, 0.391, held=held(91.0, 57.8))
+    rank = lambda *cs: [c.name for c in _significant(list(cs), {"harm_i", "step_d"}, base_rms=base, accuracy=acc)]  # noqa: E731
+    assert rank(gauge, branch) == ["faradaic_current", "strain_resistance"]
+    removed = 59.3 - 1.2 * CONTEST_SHARE * (59.3 - 1.0)
+    gauge = Candidate("strain_resistance", {}, -5000.0, 1.0, 0.391, 0.0, 0.391, held=held(91.0, removed))
+    assert rank(gauge, branch) == ["strain_resistance", "faradaic_current"]
+
+
 def test_the_signature_reorders_only_candidates_of_the_same_order():
     """A linear form that leaves the structured harmonics but predicts the held-out half many times better than the
     form that reaches them stays first (REACH_FACTOR): the harmonics are then what it leaves, not the cause."""
