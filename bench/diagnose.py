@@ -221,7 +221,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh31": "fresh31 held-out set (diagnosed once unseen at 33f4138; seen since)",
           "fresh32": "fresh32 held-out set (diagnosed once unseen at 6ca695b; seen since)",
           "fresh33": "fresh33 held-out set (diagnosed once unseen at fb908f4; seen since)",
-          "fresh34": "fresh34 held-out set (unseen)"}
+          "fresh34": "fresh34 held-out set (diagnosed once unseen at 089db7d; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
