@@ -82,7 +82,7 @@ def _sign(rng: np.random.Generator) -> float:
     return 1.0 if rng.random() < 0.5 else -1.0
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the
     columns of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns."""
