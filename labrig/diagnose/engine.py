@@ -734,8 +734,9 @@ def _rival_forms(structured: list[str], untouched: list[str]) -> list:
     lin = [set(structured) & b for b in LINEAR_BLOCKS]
     if all(lin) and set(untouched) & set().union(*lin):
         forms.append(SERIES_ELEMENT)
-    # a series element whose resistance varies makes both: where either is worth fitting, it is too
-    return forms + [VARYING_SERIES] if forms else forms
+    if forms:  # a series element whose resistance varies makes both signatures: where either is worth fitting, it is too
+        forms.append(VARYING_SERIES)
+    return forms
 
 
 def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], accuracy: dict[str, float]) -> Rival | None:

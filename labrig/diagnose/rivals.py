@@ -42,6 +42,27 @@ def _y3(ctx: Context) -> np.ndarray:
     return hit
 
 
+def _drive_changed(p, ctx: Context, g1: np.ndarray, r3: np.ndarray) -> None:
+    """Both channels of a strip whose drive was changed before it, in place: the fundamentals by g1 (the strip's drive
+    over the recorded one), and the strip's drive's 3rd harmonic r3 (over its fundamental) through H(3 s) and Y(3 s)."""
+    p.hd = p.hd.astype(complex)
+    p.hi = p.hi.astype(complex)
+    p.hd[:, 1] = p.hd[:, 1] + r3 * ctx.Hd3 / ctx.Hd
+    p.hi[:, 1] = p.hi[:, 1] + r3 * _y3(ctx) / ctx.Hi
+    p.Hd, p.Hi = p.Hd * g1, p.Hi * g1
+
+
+def _steps_behind(ctx: Context, z_s):
+    """(k, step record, its FFT grid for the strip behind a series impedance z_s(s): (nfft, sigma, [H G, Y G]), G = 1 /
+    (1 + z_s Y)) for each step record sampled at a known rate."""
+    for k, st in enumerate(ctx.steps):
+        if st.fs_full <= 0 or st.v_full.size == 0:
+            continue
+        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
+        g = 1.0 / (1.0 + z_s(timeresp.grid_s(nfft, sigma, st.fs_full)) * y)
+        yield k, st, (nfft, sigma, [h * g, y * g])
+
+
 def distorted_drive(th, ctx: Context):
     """The strip driven by ``drive_map`` of the recorded drive: both channels' fundamentals scaled by the map's gain at
     each sine's amplitude, its 3rd harmonic passed through H(3 s) and Y(3 s), the steps re-driven."""
@@ -54,11 +75,7 @@ def distorted_drive(th, ctx: Context):
         c1, c3 = np.where(ok, c[:, 0], 1.0), c[:, 2]
         g1 = np.where(ok, c1 / np.where(ok, a, 1.0), 1.0)
         turn = np.where(ok, drv / np.where(ok, a, 1.0), 1.0) ** 2
-        p.hd = p.hd.astype(complex)
-        p.hi = p.hi.astype(complex)
-        p.hd[:, 1] = p.hd[:, 1] + c3 / c1 * ctx.Hd3 / ctx.Hd * turn
-        p.hi[:, 1] = p.hi[:, 1] + c3 / c1 * _y3(ctx) / ctx.Hi * turn
-        p.Hd, p.Hi = p.Hd * g1, p.Hi * g1
+        _drive_changed(p, ctx, g1, c3 / c1 * turn)
     for k, st in enumerate(ctx.steps):
         p.step_d[k], p.step_i[k] = predict_step(specimen_for(ctx.specimens, st.pressure_kPa), st, drive_map(st.v_full, th))
     return p
@@ -81,12 +98,8 @@ def series_element(th, ctx: Context):
         s = 2j * np.pi * np.array([x.f for x in ctx.sines])
         g = 1.0 / (1.0 + (r + el / s) * ctx.Hi)
         p.Hd, p.Hi = p.Hd * g, p.Hi * g
-    for k, st in enumerate(ctx.steps):
-        if st.fs_full <= 0 or st.v_full.size == 0:
-            continue
-        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
-        g = 1.0 / (1.0 + (r + el / timeresp.grid_s(nfft, sigma, st.fs_full)) * y)
-        d, i = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [h * g, y * g]))
+    for k, st, grid in _steps_behind(ctx, lambda s: r + el / s):
+        d, i = timeresp.respond(st.v_full, st.fs_full, grid)
         p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
     return p
 
@@ -131,19 +144,11 @@ def varying_series(th, ctx: Context):
         ok = np.abs(drv) > 0
         safe = np.where(ok, drv, 1.0)
         fac = np.where(ok, g * (1.0 - e1 / safe), g)
-        y3 = _y3(ctx)
-        third = np.where(ok, -e3 / (1.0 + r * y3) / (g * (safe - e1)), 0.0)
-        p.hd = p.hd.astype(complex) + np.stack([np.zeros_like(third), third * ctx.Hd3 / ctx.Hd], axis=1)
-        p.hi = p.hi.astype(complex) + np.stack([np.zeros_like(third), third * y3 / ctx.Hi], axis=1)
-        p.Hd, p.Hi = p.Hd * fac, p.Hi * fac
-    for k, st in enumerate(ctx.steps):
-        if st.fs_full <= 0 or st.v_full.size == 0:
-            continue
-        nfft, sigma, (h, y) = step_grid(specimen_for(ctx.specimens, st.pressure_kPa), st.v_full.size, st.fs_full)
-        g = 1.0 / (1.0 + r * y)
-        grid = (nfft, sigma, [h * g, y * g])
-        (i,) = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, [y * g]))
-        d, i = timeresp.respond(st.v_full - _drop(st.v_full, i, th), st.fs_full, grid)
+        third = np.where(ok, -e3 / (1.0 + r * _y3(ctx)) / (g * (safe - e1)), 0.0)
+        _drive_changed(p, ctx, fac, third)
+    for k, st, (nfft, sigma, hy) in _steps_behind(ctx, lambda s: r):
+        (i,) = timeresp.respond(st.v_full, st.fs_full, (nfft, sigma, hy[1:]))  # the current behind the linear part
+        d, i = timeresp.respond(st.v_full - _drop(st.v_full, i, th), st.fs_full, (nfft, sigma, hy))
         p.step_d[k], p.step_i[k] = st.decimate(d), st.decimate(i)
     return p
 
