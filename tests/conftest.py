@@ -19,6 +19,11 @@ os.environ.setdefault("LABRIG_DIAGNOSE_WORKERS", "1")
 # on 12000-sample records took 17-23 s each in the suite, 2-2.6 s alone, and half their CPU went to the second thread
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
+# the project's bytecode is cached (its git-ignored __pycache__ folders) even where the environment asks for none
+# (PYTHONDONTWRITEBYTECODE): the suite starts a few hundred Python processes (the CLI, the simulated instruments,
+# the sweeps), and each would compile labrig's 50 000 lines anew, 0.4 s of CPU for one that imports the diagnosis
+os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
+sys.dont_write_bytecode = False
 
 _status = {"code": 0}
 _bench_cases: dict[tuple[str, int], bool] = {}  # (scenario, seed) -> diagnosed (else fitted only)

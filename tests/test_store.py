@@ -122,6 +122,29 @@ def test_analysis_written_after_the_run_and_overwritten(tmp_path):
         assert f["entry/analysis/diagnosis/R_cont_ohm"].attrs["units"] == "ohm"
 
 
+
+def test_a_session_read_then_written_is_walked_once_and_a_change_between_is_walked_again(tmp_path, monkeypatch):
+    """The diagnosis stores into the session it has just read: HDF5's read-write open rewrites the superblock, and
+    the hostile-file walk is not repeated for a file unchanged since it was read; a file changed in between is."""
+    from labrig.store import validate
+
+    path, uid = tmp_path / "s.h5", new_uid()
+    w = SessionWriter(path)
+    w(run_start(uid))
+    w(RunStop(uid, "success", "", 0.0))
+    walks = []
+    real = validate._walk
+    monkeypatch.setattr(validate, "_walk", lambda f, where: (walks.append(str(where)), real(f, where))[1])
+    with SessionReader(path):
+        pass
+    SessionFile(path).write_analysis("fit/seed000", {"f1_Hz": 3.3})
+    assert len(walks) == 1, walks  # read, then written: one walk
+    with h5py.File(path, "a") as f:  # changed by another hand between a read and the next write: a soft link
+        f["entry"]["alias"] = h5py.SoftLink("/entry/analysis")
+    with pytest.raises(BadInput, match="soft link"):
+        SessionFile(path).write_analysis("fit/seed000", {"f1_Hz": 3.4})
+    assert len(walks) == 2
+
 WRITER = textwrap.dedent(
     """
     import sys, time

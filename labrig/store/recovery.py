@@ -10,7 +10,7 @@ import h5py
 
 from labrig.errors import BadInput
 from labrig.store.layout import is_session
-from labrig.store.validate import check_path, validate_open
+from labrig.store.validate import check_path, identity, validate_open
 
 
 def crashed_writer_flags(exc: OSError) -> bool:
@@ -24,6 +24,7 @@ def open_for_update(path: str | Path) -> h5py.File:
     session's lock, the flags are stale and are cleared here, as ``h5clear -s --increment`` would.
     """
     p = check_path(path)
+    before = identity(p)  # the read-write open rewrites the superblock: a file read and validated just now is this one
     try:
         f = h5py.File(p, "a", libver="latest")
     except OSError as exc:
@@ -35,8 +36,9 @@ def open_for_update(path: str | Path) -> h5py.File:
         if writer_alive(p):
             raise busy from None
         clear_write_flags(p)
+        before = None  # changed here: walked again
         f = h5py.File(p, "a", libver="latest")
-    validate_open(f, p)  # a hostile file: one line, closed
+    validate_open(f, p, before)  # a hostile file: one line, closed
     if not is_session(f):
         f.close()
         raise BadInput(f"{p}: not a labrig session (no /entry with a labrig_format attribute)")
