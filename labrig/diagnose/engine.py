@@ -28,7 +28,9 @@ from labrig.diagnose.nuisance import FIT_TOL, VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.drive_line import series_contexts, series_reading
+from labrig.diagnose import second_mode
 from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, VARYING_SERIES, rival_detail
+from labrig.diagnose.second_mode import SECOND_MODE
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
 from labrig.diagnose.verdict import CLOCK_Z, STRUCTURE_MARGIN, clock_offset, structured, where as locate_misses
 from labrig.diagnose.wet_strip import WetRefit, WetSession, correction, refine_loss, reshaped, wet_contexts
@@ -401,6 +403,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.97, -0.02, 0.5])]  # walking towards the tip
     if ext.form == "room_cycle":
         starts += [np.array([0.0, 0.0, per, 0.0, 30.0, 1.0, 0.0]) for per in (900.0, 3600.0)]  # the cycle's period: a and b are linear
+    if ext.form == SECOND_MODE.form:
+        starts += [np.array(x) for x in second_mode.STARTS]
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)
@@ -713,7 +717,8 @@ def gains(c: Candidate, ratio: float, excess: float | None) -> bool:
 
 @dataclass
 class Rival:
-    """The drive-path rival that took the verdict from ``instead_of``, lowering ``lowered`` (structured blocks it left)."""
+    """The rival (a drive path, a second resonator) that took the verdict from ``instead_of``, lowering ``lowered``
+    (structured blocks: for a drive path those the named cause left where the base put them)."""
 
     fit: Candidate
     instead_of: Candidate
@@ -757,6 +762,10 @@ def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], 
         lowered = [k for k in untouched if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
         if lowered:
             won.append(Rival(r, named[0], lowered))
+    if second_mode.challenges(named[0].name, structured):  # its signature: the named cause's error halved (second_mode.py)
+        r = scorer.score_form(SECOND_MODE.name, SECOND_MODE)
+        if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and second_mode.takes(r.heldout_ratio, named[0].heldout_ratio):
+            won.append(Rival(r, named[0], [k for k in structured if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]))
     return min(won, key=lambda w: w.fit.heldout_ratio, default=None)
 
 
@@ -827,7 +836,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy, excess=EXCESS_EFFECT)
     rival = _rival(scorer, named, held_rms, accuracy)
-    drive_path = None if rival is None else rival.report()
+    drive_path = None if rival is None or rival.fit.name == SECOND_MODE.name else rival.report()
+    coupled = None if rival is None or rival.fit.name != SECOND_MODE.name else rival.report()
     if rival is not None:
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     clock = clock_offset(feats.sines, FRF_FLOOR)
@@ -940,7 +950,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         level = monitor["worst"]["drive_share"] / monitor["share_limit"]
         residual_where.insert(0, {"block": "drive_monitor", "level": level, "over_accuracy": level, "detail": monitor_detail(monitor)})
     if rival is not None:
-        residual_where.insert(0, rival_detail(drive_path))
+        residual_where.insert(0, rival_detail(drive_path) if drive_path else second_mode.detail(coupled))
     if recording["flagged"]:
         level = artefact_level(recording)  # the worst artefact over its threshold
         residual_where.insert(0, {"block": "recording", "level": level, "over_accuracy": level,
@@ -970,6 +980,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         "drive_monitor": monitor,
         # a distortion of the drive before the strip, which took the verdict from a named cause (rivals.py)
         "drive_path": drive_path,
+        # a second resonator coupled to the strip's first mode, which took the verdict from a named cause (second_mode.py)
+        "second_mode": coupled,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},
