@@ -225,7 +225,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh32": "fresh32 held-out set (diagnosed once unseen at 6ca695b; seen since)",
           "fresh33": "fresh33 held-out set (diagnosed once unseen at fb908f4; seen since)",
           "fresh34": "fresh34 held-out set (diagnosed once unseen at 089db7d; seen since)",
-          "fresh35": "fresh35 held-out set (unseen: registered before any diagnosis of it)"}
+          "fresh35": "fresh35 held-out set (diagnosed once unseen at 8bab252; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
