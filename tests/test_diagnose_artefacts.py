@@ -313,3 +313,30 @@ def test_a_comb_of_the_drives_harmonics_takes_the_verdict(clean):
     assert a["lines"]["flagged"] and a["locked"]["flagged"] and a["locked"]["channels"] == ["current"], a["locked"]
     assert _recording_decides(quiet, quiet, a, [])
     assert "drive's frequency lattice" in art.detail(a)
+
+
+def test_step_records_stored_without_their_mean_take_the_verdict(clean):
+    """An export that detrends each record (scipy.signal.detrend, the least-squares line off), or only takes its mean
+    off (AC coupling in software): a strip's step record never reads a mean of zero, so the recording takes the verdict
+    from any named cause (engine._recording_decides) and the detail says so. A reading tared at each record's arming
+    (its pre-edge mean off) or moved by an offset is not."""
+    from scipy import signal
+
+    from labrig.diagnose.detrended import MEAN_SHARE
+    from labrig.diagnose.engine import _recording_decides
+
+    quiet = {"flagged": False}
+    a = art.artefacts(clean)
+    assert not a["detrended"]["flagged"] and a["detrended"]["records"] >= 2 and a["detrended"]["largest_mean_share"] > 0.3, a["detrended"]
+    steps = [r for r in clean.all_records() if r.kind == "step"]
+    for change, flagged in ((lambda r: signal.detrend(r.d, type="linear"), True), (lambda r: r.d - np.mean(r.d), True),
+                            (lambda r: r.d - np.mean(r.d[r.t < r.t[0] + 0.5]), False), (lambda r: r.d + 3e-4, False)):
+        sd = copy.deepcopy(clean)
+        for r in (r for r in sd.all_records() if r.kind == "step"):
+            r.d = change(r)
+        b = art.artefacts(sd)
+        assert b["detrended"]["flagged"] is flagged and b["detrended"]["records"] == len(steps), b["detrended"]
+        assert _recording_decides(quiet, quiet, b, []) is flagged
+        assert ("no mean in any of the" in art.detail(b)) is flagged
+        if flagged:
+            assert b["detrended"]["largest_mean_share"] < MEAN_SHARE * 1e-6 and b["flagged"] and art.level(b) > 1.0

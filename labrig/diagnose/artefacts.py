@@ -61,6 +61,7 @@ from labrig.diagnose.arming import ARMING_Z, arming
 from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_lengths, wrapping
 from labrig.diagnose.drive_locked import lattice_chance, locked
 from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
+from labrig.diagnose.detrended import detrended
 from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
@@ -370,8 +371,9 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["load_cell"] = follows_drive(sd)  # the force reading carries the drive's line (load_cell.py)
     out["reversed"] = reversed_blocks(sd)  # the reading's sign changed between the settings (reversed_blocks.py)
     out["locked"] = locked(per, CHANNELS, MIN_RECORDS)  # foreign lines on the drive's lattice (drive_locked.py)
+    out["detrended"] = detrended(sd)  # the step records' displacement stored with its mean taken off (detrended.py)
     out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
-                                                      "clipped", "wrapped", "arming", "locked"))
+                                                      "clipped", "wrapped", "arming", "locked", "detrended"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -381,7 +383,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "clip_run": out["clipped"]["longest_run"] if out["clipped"]["flagged"] else 0, "arming_z": out["arming"]["second_z"],
                   "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0,
                   "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0,
-                  "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0}
+                  "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0,
+                  "detrended": 2.0 if out["detrended"]["flagged"] else 0.0}
     return out
 
 
@@ -399,7 +402,7 @@ def level(a: dict[str, Any]) -> float:
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
                      m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0),
-                     m.get("locked", 0.0)))
+                     m.get("locked", 0.0), m.get("detrended", 0.0)))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -449,6 +452,11 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the displacement reads the strip's bend reversed at {', '.join(f'{p:g}' for p in r['reversed_kPa'])} kPa and as the "
                      f"model does at the other settings (FRF phase agreement per setting {r['agreement']}): the sensor moved to the "
                      f"strip's other face, or the strip clamped the other way round, at a re-clamping")
+    if a.get("detrended", {}).get("flagged"):
+        t = a["detrended"]
+        parts.append(f"the displacement has no mean in any of the {t['records']} step records (at most {t['largest_mean_share']:.1e} of its "
+                     f"RMS, where a strip's step keeps a third of it or more): the records were detrended before they were stored (an export's "
+                     f"drift correction, AC coupling in software), which moves each step's plateau and rest by about half the step")
     if a.get("load_cell", {}).get("flagged"):
         c = a["load_cell"]
         parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "
