@@ -9,7 +9,7 @@ import pytest
 
 from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
-from labrig.diagnose.families import _nearest, band_delay, band_delay_tf, lowpass, lowpass_tf
+from labrig.diagnose.families import _nearest, band_delay, band_delay_tf, ema_tf, lowpass, lowpass_tf, per_sample_smoothing
 from labrig.physics import presets, timeresp
 
 PRESSURES = (612.0, 1837.0, 3062.0, 4287.0)
@@ -54,6 +54,33 @@ def test_the_lowpass_spans_the_lag_and_the_delay_and_is_causal():
     np.testing.assert_allclose(p.Hd / ctx.Hd, lowpass_tf(2j * np.pi * f, tau, 2.5), rtol=1e-12)
     np.testing.assert_allclose(lowpass(np.array([0.0, 2.5]), ctx).Hd, ctx.Hd)
 
+
+
+def test_a_moving_average_per_sample_lags_by_its_samples_at_each_records_own_rate():
+    """ema_tf is the logger's y += alpha (x - y) (scipy.signal.lfilter on a sampled sine, its steady state); its lag
+    at low frequencies is (1 - alpha)/alpha samples, so the same filter lags a 200 Hz record five times as long as a
+    1 kHz one; the form scales each sine by the filter at its own record's rate and leaves a record of unknown rate."""
+    from scipy import signal
+
+    alpha, f = 0.3, 3.0
+    for fs in (200.0, 1000.0):
+        t = np.arange(int(20 * fs)) / fs
+        y = signal.lfilter([alpha], [1.0, -(1.0 - alpha)], np.cos(2 * np.pi * f * t))
+        tail = t > 10.0
+        ph = np.exp(-2j * np.pi * f * t[tail])
+        got = 2 * np.mean(y[tail] * ph)  # the steady state's phasor at f (whole cycles)
+        assert got == pytest.approx(ema_tf(2j * np.pi * f, alpha, fs), abs=2e-3)
+    lag = [-np.angle(ema_tf(2j * np.pi * 0.1, alpha, fs)) / (2 * np.pi * 0.1) for fs in (200.0, 1000.0)]
+    assert lag[0] == pytest.approx((1 - alpha) / alpha / 200.0, rel=1e-3) and lag[0] == pytest.approx(5 * lag[1], rel=1e-3)
+    ctx = _context(freqs=(0.5, 5.0, 20.0))
+    rates = [200.0, 1000.0, float("nan")] * len(PRESSURES)
+    for sn, fs in zip(ctx.sines, rates):
+        sn.fs = fs
+    p = per_sample_smoothing(np.array([alpha]), ctx)
+    for k, (sn, fs) in enumerate(zip(ctx.sines, rates)):
+        want = 1.0 if not np.isfinite(fs) else ema_tf(2j * np.pi * sn.f, alpha, fs)
+        assert p.Hd[k] / ctx.Hd[k] == pytest.approx(want, rel=1e-12)
+    np.testing.assert_array_equal(per_sample_smoothing(np.array([1.0]), ctx).Hd, ctx.Hd)
 
 def test_the_band_delay_is_late_below_its_share_and_on_time_above():
     """1 + (exp(-s L) - 1)/(1 + s/w): the slow share late by L (phase -w L at low frequency), the fast share on time

@@ -403,6 +403,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.97, -0.02, 0.5])]  # walking towards the tip
     if ext.form == "room_cycle":
         starts += [np.array([0.0, 0.0, per, 0.0, 30.0, 1.0, 0.0]) for per in (900.0, 3600.0)]  # the cycle's period: a and b are linear
+    if ext.form == "per_sample":
+        starts += [np.array([0.15])]  # a lag of several samples
     if ext.form == SECOND_MODE.form:
         starts += [np.array(x) for x in second_mode.STARTS]
     if ext.form == "pi_output":
@@ -798,9 +800,10 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
-    drive's lattice (drive_locked.py)."""
+    drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
-                or recording["locked"]["flagged"] or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
+                or recording["locked"]["flagged"] or recording["detrended"]["flagged"]
+                or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 
 def split(feats: Features) -> tuple[set, set]:

@@ -10,7 +10,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential; Langmuir adsorption peaks; a transport-limited wave; a wave fading (or gathering) with the session's clock |
 | hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path |
-| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path) |
+| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path); a logger's moving average run per sample (a lag of so many samples at each record's rate) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
@@ -91,6 +91,32 @@ def band_delay_tf(s, delay: float, f_share: float):
 
 
 band_delay = _relax(lambda s, th: band_delay_tf(s, *th))
+
+
+def ema_tf(s, alpha: float, fs: float):
+    """An exponential moving average run per sample at fs, y[n] = y[n-1] + alpha (x[n] - y[n-1]): alpha / (1 - (1 -
+    alpha) exp(-s/fs)), the sum of the sample delays k/fs weighted alpha (1 - alpha)^k (causal). Unit gain at DC, a
+    lag of (1 - alpha)/alpha samples at low frequencies: a fixed number of samples, so a different time at each rate."""
+    return alpha / (1.0 - (1.0 - alpha) * np.exp(-np.asarray(s, complex) / fs))
+
+
+def per_sample_smoothing(th, ctx: Context):
+    """The displacement smoothed by a logger's moving average set per sample (``ema_tf`` at each record's own rate):
+    sines by the filter at their record's rate, steps through it at theirs (a record of unknown rate as it was)."""
+    (alpha,) = th
+    p = baseline(ctx)
+    if alpha >= 1.0:
+        return p
+    if ctx.sines:
+        f, rate = np.array([[x.f, x.fs] for x in ctx.sines], float).T
+        ok = np.isfinite(rate) & (rate > 0)
+        g = np.ones(f.size, complex)
+        g[ok] = ema_tf(2j * np.pi * f[ok], alpha, rate[ok])
+        p.Hd = p.Hd * g
+    for k, st in enumerate(ctx.steps):
+        if st.fs_full > 0 and st.t.size > 1:
+            p.step_d[k] = timeresp.simulate(lambda s: ema_tf(s, alpha, st.fs_full), p.step_d[k], 1.0 / np.median(np.diff(st.t)))
+    return p
 
 
 # ------------------------------------------------------------------------------------------ faradaic branches
@@ -591,6 +617,9 @@ FAMILIES["time_delay"] += [
     _form("time_delay", "band", ("delay_s", "f_share_Hz"), (0.02, 1.0), (0.0, 0.02), (0.3, 50.0), band_delay,
           "the slow share of the reading (below f_share) late by L, the fast share at once: 1 + (exp(-s L) - 1)/(1 + s/w) "
           "(a tracking stage's or a coarse-fine pair's slow path read late)", refit_mechanics=True),
+    _form("time_delay", "per_sample", ("alpha",), (0.5,), (0.02,), (1.0,), per_sample_smoothing,
+          "the displacement through a moving average run per sample, alpha/(1 - (1 - alpha) e^{-s/fs}) at each record's "
+          "own rate: a logger's smoothing, its lag a number of samples and so a different time at each rate", refit_mechanics=True),
 ]
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,

@@ -49,6 +49,7 @@ class SineFeature:
     # pickup and the strip's harmonic are one reading (a 20 Hz sine's third at 60 Hz): not read, as a line the drive
     # puts a harmonic on is not read as pickup (``_driven``)
     on_mains: tuple[bool, bool] = (False, False)
+    fs: float = float("nan")  # the record's own sample rate (Hz): a filter run per sample acts by it
 
     @property
     def Hd(self) -> complex:
@@ -291,7 +292,7 @@ def extract(sd: SessionData) -> Features:
             est = sine_estimate(r.t, r.v, r.i, r.d, f, *sine_cycles(r))
             amp = float(r.meta.get("amplitude_V", abs(est.drive[0])))
             feats.sines.append(SineFeature(r.name, p, r.t_start, f, amp, est, slope, fmean, slope_sigma, est.disp_mean - rest.get(p, 0.0),
-                                           _on_mains(f, r.fs)))
+                                           _on_mains(f, r.fs), r.fs))
         elif r.kind == "step" and p not in first_step:
             first_step.add(p)
             q, (t, v, d, i) = _decimate(r, STEP_RATE_HZ)
