@@ -127,6 +127,12 @@ def cosine_harmonics(fun, amp: np.ndarray, n: int) -> np.ndarray:
 # ------------------------------------------------------------------------------------------------ effects
 
 
+def step_through(st: StepFeature, y: np.ndarray, tf) -> np.ndarray:
+    """A step record's predicted displacement ``y`` (on the record's averaged grid) read through the transfer function
+    ``tf(s)`` of a path after the strip (a sensor's filter, a relaxation of the bend, a coupled mode)."""
+    return timeresp.simulate(tf, y, 1.0 / float(np.median(np.diff(st.t))))
+
+
 def _back_relaxation(th, ctx):
     k2, tau = th
     p = baseline(ctx)
@@ -138,8 +144,7 @@ def _back_relaxation(th, ctx):
     f = np.array([s.f for s in ctx.sines])
     p.Hd = p.Hd * B(2j * np.pi * f)
     for k, st in enumerate(ctx.steps):
-        fs = 1.0 / np.median(np.diff(st.t))
-        p.step_d[k] = timeresp.simulate(B, p.step_d[k], fs)
+        p.step_d[k] = step_through(st, p.step_d[k], B)
     return p
 
 

@@ -761,14 +761,20 @@ def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], 
         r = scorer.behind_series() if ext is SERIES_ELEMENT else scorer.score_form(ext.name, ext)
         if not (r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and r.heldout_ratio <= named[0].heldout_ratio):
             continue
-        lowered = [k for k in untouched if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
+        lowered = _lowers(r, untouched, base_rms)
         if lowered:
             won.append(Rival(r, named[0], lowered))
     if second_mode.challenges(named[0].name, structured):  # its signature: the named cause's error halved (second_mode.py)
         r = scorer.score_form(SECOND_MODE.name, SECOND_MODE)
         if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and second_mode.takes(r.heldout_ratio, named[0].heldout_ratio):
-            won.append(Rival(r, named[0], [k for k in structured if block_rms(r.held).get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]))
+            won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
     return min(won, key=lambda w: w.fit.heldout_ratio, default=None)
+
+
+def _lowers(r: Candidate, among: list[str], base_rms: dict[str, float]) -> list[str]:
+    """The blocks of ``among`` the rival's form lowers from the base's level by more than ``REACH_TOL``."""
+    rms = block_rms(r.held)
+    return [k for k in among if rms.get(k, np.inf) < (1 - REACH_TOL) * base_rms[k]]
 
 
 def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, Context]:

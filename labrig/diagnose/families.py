@@ -28,7 +28,7 @@ import numpy as np
 from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
-                                      played_drive, sensor_read)
+                                      played_drive, sensor_read, step_through)
 from labrig.diagnose import contact, flag, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ, specimen_for, step_grid
@@ -51,8 +51,7 @@ def _relax(B):
         f = np.array([s.f for s in ctx.sines])
         p.Hd = p.Hd * B(2j * np.pi * f, th)
         for k, st in enumerate(ctx.steps):
-            fs = 1.0 / np.median(np.diff(st.t))
-            p.step_d[k] = timeresp.simulate(lambda s: B(s, th), p.step_d[k], fs)
+            p.step_d[k] = step_through(st, p.step_d[k], lambda s: B(s, th))
         return p
 
     return apply
@@ -115,7 +114,7 @@ def per_sample_smoothing(th, ctx: Context):
         p.Hd = p.Hd * g
     for k, st in enumerate(ctx.steps):
         if st.fs_full > 0 and st.t.size > 1:
-            p.step_d[k] = timeresp.simulate(lambda s: ema_tf(s, alpha, st.fs_full), p.step_d[k], 1.0 / np.median(np.diff(st.t)))
+            p.step_d[k] = step_through(st, p.step_d[k], lambda s: ema_tf(s, alpha, st.fs_full))
     return p
 
 
@@ -383,8 +382,7 @@ def _lag(th, ctx: Context):
     f = np.array([s.f for s in ctx.sines])
     p.Hd = p.Hd / (1 + 2j * np.pi * f * tau)
     for k, st in enumerate(ctx.steps):
-        fs = 1.0 / np.median(np.diff(st.t))
-        p.step_d[k] = timeresp.simulate(lambda s: 1 / (1 + s * tau), p.step_d[k], fs)
+        p.step_d[k] = step_through(st, p.step_d[k], lambda s: 1 / (1 + s * tau))
     return p
 
 

@@ -23,8 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context, Extension, baseline, specimen_for
-from labrig.physics import timeresp, transfer
+from labrig.diagnose.catalogue import Context, Extension, baseline, specimen_for, step_through
+from labrig.physics import transfer
 
 CHALLENGED = frozenset({"time_delay", "sensor_offset"})
 # Set on the seen cases named time_delay or sensor_offset (tuning and fresh31-34, right or wrong, 37 sessions): the
@@ -60,7 +60,7 @@ def coupled_resonator(th, ctx: Context):
         if st.t.size < 2:
             continue
         w1, z1 = _mode(ctx, st.pressure_kPa)
-        p.step_d[k] = timeresp.simulate(lambda s: coupling(s, w1, z1, w2, z2, mu), p.step_d[k], 1.0 / float(np.median(np.diff(st.t))))
+        p.step_d[k] = step_through(st, p.step_d[k], lambda s: coupling(s, w1, z1, w2, z2, mu))
     return p
 
 
