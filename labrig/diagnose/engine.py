@@ -407,6 +407,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.15])]  # a lag of several samples
     if ext.form == SECOND_MODE.form:
         starts += [np.array(x) for x in second_mode.STARTS]
+    if ext.form == "preisach_drive":
+        starts += [np.array([0.2, 0.5, 0.2, 0.1, 0.3, 1.0, 0.0]), np.array([0.2, 0.5, 0.2, -0.1, 0.3, 1.0, 0.0])]  # relays off centre
     if ext.form == "pi_output":
         starts += [np.array([0.3, 1000.0, 1.0]), np.array([-0.3, 300.0, 1.0])]
     lo, hi = np.array(ext.lo), np.array(ext.hi)

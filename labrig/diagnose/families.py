@@ -29,7 +29,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read, step_through)
-from labrig.diagnose import contact, flag, slow_forms as slow, station
+from labrig.diagnose import contact, flag, preisach, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ, specimen_for, step_grid
 from labrig.physics import timeresp
@@ -546,6 +546,10 @@ FAMILIES["hysteresis"] += [
     _form("hysteresis", "bouc_wen_output", ("weight", "z_sat_um", "shape_q"), (0.3, 100.0, 0.0), (0.0, 1.0, -1.0), (1.0, 5000.0, 1.0),
           _bouc_wen_output, "Bouc-Wen loop in the displacement path, y = d - w z(d), |z| <= z_sat: smooth memory on the sensor side",
           refit_mechanics=True),
+    _form("hysteresis", "preisach_drive", preisach.PARAMS, (0.2, 0.25, 0.15, 0.0, 0.3, 1.0, 0.0), (-1.0, 0.02, 0.05, -0.8, 0.1, 0.2, -2.0),
+          (1.0, 1.0, 1.0, 0.8, 2.0, 5.0, 2.0), preisach.preisach_drive,
+          "Preisach operator on the drive: relays with a Gaussian density over coercivity and bias (units of the largest "
+          "drive), loops that saturate past the relays' thresholds and sit off zero with the bias (preisach.py)"),
 ]
 FAMILIES["large_deflection"] += [
     _form("large_deflection", "curled_arc", ("theta0_rad", "length_factor"), (0.2, 1.0), (-1.2, 0.02), (1.2, 5.0), curled_arc,
