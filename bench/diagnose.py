@@ -229,7 +229,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh33": "fresh33 held-out set (diagnosed once unseen at fb908f4; seen since)",
           "fresh34": "fresh34 held-out set (diagnosed once unseen at 089db7d; seen since)",
           "fresh35": "fresh35 held-out set (diagnosed once unseen at 8bab252; seen since)",
-          "fresh36": "fresh36 held-out set (unseen: no threshold saw it)"}
+          "fresh36": "fresh36 held-out set (diagnosed once unseen at 4c5e4c5; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

@@ -77,7 +77,7 @@ def _phase_lag(t: np.ndarray, y: np.ndarray, x: np.ndarray, f: float) -> float:
     return -float(np.angle(line(y) / line(x))) / (2 * np.pi * f)
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the columns
     of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns: every form of the
