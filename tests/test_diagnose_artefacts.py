@@ -340,3 +340,40 @@ def test_step_records_stored_without_their_mean_take_the_verdict(clean):
         assert ("no mean in any of the" in art.detail(b)) is flagged
         if flagged:
             assert b["detrended"]["largest_mean_share"] < MEAN_SHARE * 1e-6 and b["flagged"] and art.level(b) > 1.0
+
+
+def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
+    """A laser's hold input wired to the step script's drive-on marker: the displacement repeats the reading it had at
+    the edge through the plateau while the current goes on with its noise. One such record flags the session; two take
+    the verdict from any cause (engine._recording_decides). A stretch filled in a gap of the time stamps (every
+    channel interpolated, not read) and a displacement clipped at its range's end (clipping.py's) are not frozen."""
+    from labrig.diagnose.engine import _recording_decides
+    from labrig.diagnose.frozen import FROZEN_RUN, frozen_run
+
+    quiet = {"flagged": False}
+    a = art.artefacts(clean)
+    assert not a["frozen"]["flagged"] and a["frozen"]["longest_run"] < FROZEN_RUN / 2, a["frozen"]
+
+    def hold(r):
+        on = np.flatnonzero(r.v > 0.5 * np.max(r.v))
+        r.d = r.d.copy()
+        r.d[on[0]:on[-1] + 1] = r.d[on[0] - 1]
+
+    for n, flagged, decides in ((1, True, False), (2, True, True)):
+        sd = copy.deepcopy(clean)
+        for r in [r for r in sd.all_records() if r.kind == "step"][:n]:
+            hold(r)
+        b = art.artefacts(sd)
+        assert b["frozen"]["flagged"] is flagged and b["frozen"]["decides"] is decides and b["frozen"]["records"] == n, b["frozen"]
+        assert b["frozen"]["channels"] == ["displacement"] and b["frozen"]["longest_run"] > 1000
+        assert _recording_decides(quiet, quiet, b, []) is decides
+        assert "repeats one reading" in art.detail(b) and b["flagged"] and art.level(b) > 1.0
+    # the same run with the current held too (a gap the import filled: every channel at once) is no frozen sensor;
+    # a run the import marks as filled is not read
+    st = next(r for r in copy.deepcopy(clean).all_records() if r.kind == "step")
+    x, i = st.d.copy(), st.i.copy()
+    x[1000:3000], i[1000:3000] = x[999], i[999]
+    assert frozen_run(x, st.i) >= 2000 and frozen_run(x, i) < FROZEN_RUN
+    filled = np.zeros(x.size, bool)
+    filled[1000:3000] = True
+    assert frozen_run(x, st.i, filled) < FROZEN_RUN

@@ -62,6 +62,7 @@ from labrig.diagnose.clipping import CLIP_RUN, UNITS, WRAP_SHARE, clipping, run_
 from labrig.diagnose.drive_locked import lattice_chance, locked
 from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
 from labrig.diagnose.detrended import detrended
+from labrig.diagnose.frozen import FROZEN_RUN, frozen
 from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
@@ -372,8 +373,9 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["reversed"] = reversed_blocks(sd)  # the reading's sign changed between the settings (reversed_blocks.py)
     out["locked"] = locked(per, CHANNELS, MIN_RECORDS)  # foreign lines on the drive's lattice (drive_locked.py)
     out["detrended"] = detrended(sd)  # the step records' displacement stored with its mean taken off (detrended.py)
+    out["frozen"] = frozen(sd)  # a channel repeating one reading while the other goes on (frozen.py)
     out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
-                                                      "clipped", "wrapped", "arming", "locked", "detrended"))
+                                                      "clipped", "wrapped", "arming", "locked", "detrended", "frozen"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -384,7 +386,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "wrap_share": out["wrapped"]["largest_share"] if out["wrapped"]["flagged"] else 0.0,
                   "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0,
                   "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0,
-                  "detrended": 2.0 if out["detrended"]["flagged"] else 0.0}
+                  "detrended": 2.0 if out["detrended"]["flagged"] else 0.0,
+                  "frozen_run": out["frozen"]["longest_run"] if out["frozen"]["flagged"] else 0}
     return out
 
 
@@ -402,7 +405,7 @@ def level(a: dict[str, Any]) -> float:
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
                      m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0),
-                     m.get("locked", 0.0), m.get("detrended", 0.0)))
+                     m.get("locked", 0.0), m.get("detrended", 0.0), m.get("frozen_run", 0) / FROZEN_RUN))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -457,6 +460,11 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the displacement has no mean in any of the {t['records']} step records (at most {t['largest_mean_share']:.1e} of its "
                      f"RMS, where a strip's step keeps a third of it or more): the records were detrended before they were stored (an export's "
                      f"drift correction, AC coupling in software), which moves each step's plateau and rest by about half the step")
+    if a.get("frozen", {}).get("flagged"):
+        z = a["frozen"]
+        parts.append(f"the {' and '.join(z['channels'])} repeats one reading for up to {z['longest_run']} samples while the other channel "
+                     f"goes on with its noise, in {_records(sorted({n for v in z['names'].values() for n in v}))}: a sensor's output held "
+                     f"(a hold input wired to a trigger, a controller rebooting, a logger repeating its last frame), not the strip")
     if a.get("load_cell", {}).get("flagged"):
         c = a["load_cell"]
         parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "

@@ -808,9 +808,10 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
-    drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py)."""
+    drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py), a reading frozen
+    while the other channel goes on (frozen.py)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
-                or recording["locked"]["flagged"] or recording["detrended"]["flagged"]
+                or recording["locked"]["flagged"] or recording["detrended"]["flagged"] or recording["frozen"]["decides"]
                 or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 

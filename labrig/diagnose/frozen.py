@@ -1,0 +1,72 @@
+"""A reading frozen while the others go on: one channel repeating one value, the rest of the record read (issue 12).
+
+A sensor's controller that holds its output (a 'hold' or 'timing' input wired to a trigger, a reboot after a brown-out,
+a serial sensor whose logger repeats the last frame it parsed) returns the same value sample after sample while the
+strip moves and the other channels go on with their noise. No cause of the catalogue does that: the strip's bend and
+its current are read with their noise at every sample, and a memory that holds the strip still leaves the sensor's
+noise on it. What a form fits on the frozen stretch (a plateau read at the rest level, a bend that jumps at the
+release) is the sensor's, not the strip's: fresh36's laser held through every step's plateau (outside, seen) was named
+`large_deflection` at 0.48 and 0.49.
+
+The test, per record (every kind) and channel (displacement, current): the longest run of identical readings during
+which the other channel changes from one sample to the next in ``OTHER_MOVING`` of its samples or more (a packet the
+logger lost and the import filled is not read, and ends a run). A record counts
+where that run is ``FROZEN_RUN`` samples or longer. One such record flags the session (no knock on the table freezes
+a reading to the bit: the rule of two records for the other artefacts, artefacts.py, is not needed here), so a verdict
+of `none` becomes `unexplained`; in ``MIN_RECORDS`` records or more the recording takes the verdict from any cause
+(``decides``, ``engine._recording_decides``), as for a clipped channel. A
+channel held at the end of its range is the clipping test's (clipping.py), which reads the same runs at the extremes.
+
+``FROZEN_RUN`` was set on the seen sets (tuning, fresh2, fresh32-36: 251 sessions): with the other channel moving,
+the longest run on any record of any session but the frozen laser's and the rebooting controller's (fresh36, outside)
+was 43 samples (a laser's sample-and-hold latency, 34); the frozen ones held 193-15002.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from labrig.diagnose.clipping import run_lengths
+from labrig.estimate.session_data import SessionData
+
+FROZEN_RUN = 100  # samples
+OTHER_MOVING = 0.5  # share of the other channel's samples that differ from the one before, over the run
+MIN_RECORDS = 2
+PAIRS = {"displacement": ("d", "i"), "current": ("i", "d")}
+
+
+def frozen_run(x: np.ndarray, other: np.ndarray, filled: np.ndarray | None = None) -> int:
+    """The longest run of identical readings of ``x`` over which ``other`` (the same samples) keeps changing in
+    ``OTHER_MOVING`` of its samples (0 where the channels are too short, not finite or of other lengths); samples
+    ``filled`` in a gap of the time stamps (``TimeRecord.filled``: not read) end a run."""
+    x, other = np.asarray(x, float), np.asarray(other, float)
+    if x.size < 2 or x.size != other.size or not (np.all(np.isfinite(x)) and np.all(np.isfinite(other))):
+        return 0
+    same = np.diff(x) == 0
+    if filled is not None and np.size(filled) == x.size:
+        same &= ~(filled[1:] | filled[:-1])
+    moving = np.diff(other) != 0
+    edges = np.flatnonzero(np.diff(np.r_[0, same.astype(np.int8), 0]))
+    best = 0
+    for a, b in zip(edges[0::2], edges[1::2]):
+        if b - a + 1 > best and np.mean(moving[a:b]) >= OTHER_MOVING:
+            best = int(b - a + 1)
+    return best
+
+
+def frozen(sd: SessionData) -> dict[str, Any]:
+    """Per channel, the records with a frozen run of ``FROZEN_RUN`` samples or more; flagged in one, deciding the verdict
+    in ``MIN_RECORDS``."""
+    per: dict[str, list[str]] = {}
+    longest = 0
+    for r in sd.all_records():
+        for ch, (own, other) in PAIRS.items():
+            run = frozen_run(getattr(r, own), getattr(r, other), getattr(r, "filled", None))
+            longest = max(longest, run)
+            if run >= FROZEN_RUN:
+                per.setdefault(ch, []).append(r.name)
+    records = len({name for v in per.values() for name in v})
+    return {"records": records, "channels": sorted(per), "names": {ch: v[:8] for ch, v in per.items()},
+            "longest_run": longest, "frozen_run": FROZEN_RUN, "flagged": records >= 1, "decides": records >= MIN_RECORDS}
