@@ -346,8 +346,8 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     """A laser's hold input wired to the step script's drive-on marker: the displacement repeats the reading it had at
     the edge through the plateau while the current goes on with its noise. One such record flags the session; two take
     the verdict from any cause (engine._recording_decides). A stretch filled in a gap of the time stamps (every
-    channel interpolated, not read) and a displacement clipped at its range's end (clipping.py's) are not frozen."""
-    from labrig.diagnose.engine import _recording_decides
+    channel interpolated, not read) is not frozen, nor a held reading a memory's holds explain."""
+    from labrig.diagnose.engine import MEMORY_HOLDS, Candidate, _recording_decides
     from labrig.diagnose.frozen import FROZEN_RUN, frozen_run
 
     quiet = {"flagged": False}
@@ -368,6 +368,11 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
         assert b["frozen"]["channels"] == ["displacement"] and b["frozen"]["longest_run"] > 1000
         assert _recording_decides(quiet, quiet, b, []) is decides
         assert "repeats one reading" in art.detail(b) and b["flagged"] and art.level(b) > 1.0
+        # a memory that predicts the held-out half as a strip's holds do keeps its name (a play written into the reading
+        # without its noise holds it to the bit): as for a rail (engine._held_by_memory)
+        memory = Candidate("hysteresis", {}, -1e4, 1.0, 0.5 * MEMORY_HOLDS, 1.0)
+        assert not _recording_decides(quiet, quiet, b, [memory])
+        assert _recording_decides(quiet, quiet, b, [Candidate("large_deflection", {}, -1e4, 1.0, 0.05, 1.0)]) is decides
     # the same run with the current held too (a gap the import filled: every channel at once) is no frozen sensor;
     # a run the import marks as filled is not read
     st = next(r for r in copy.deepcopy(clean).all_records() if r.kind == "step")

@@ -796,11 +796,13 @@ def _adopt(c: Candidate, ctx_fit: Context, ctx_held: Context) -> tuple[Context, 
     return ctx_fit, ctx_held
 
 
-def _held_by_memory(named: list[Candidate], recording: dict[str, Any]) -> bool:
-    """Whether the displacement alone is held at its extremes and the first named cause is a memory that predicts the
-    held-out half to ``MEMORY_HOLDS`` of the baseline's error: the strip's holds, not the sensor's rail."""
+def _held_by_memory(named: list[Candidate], recording: dict[str, Any], check: str = "clipped") -> bool:
+    """Whether the displacement alone is held (at its extremes: ``clipped``; frozen while the current goes on:
+    ``frozen``) and the first named cause is a memory that predicts the held-out half to ``MEMORY_HOLDS`` of the
+    baseline's error: the strip's holds, not the sensor's rail or hold (a play written into a reading without its
+    noise holds it to the bit)."""
     return (bool(named) and named[0].name == "hysteresis" and named[0].heldout_ratio <= MEMORY_HOLDS
-            and recording["clipped"]["channels"] == ["displacement"])
+            and recording[check]["channels"] == ["displacement"])
 
 
 def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording: dict[str, Any],
@@ -809,9 +811,10 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
     drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py), a reading frozen
-    while the other channel goes on (frozen.py)."""
+    while the other channel goes on (frozen.py, but a memory's holds)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
-                or recording["locked"]["flagged"] or recording["detrended"]["flagged"] or recording["frozen"]["decides"]
+                or recording["locked"]["flagged"] or recording["detrended"]["flagged"]
+                or (recording["frozen"]["decides"] and not _held_by_memory(named, recording, "frozen"))
                 or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 

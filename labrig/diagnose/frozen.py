@@ -14,7 +14,9 @@ logger lost and the import filled is not read, and ends a run). A record counts
 where that run is ``FROZEN_RUN`` samples or longer. One such record flags the session (no knock on the table freezes
 a reading to the bit: the rule of two records for the other artefacts, artefacts.py, is not needed here), so a verdict
 of `none` becomes `unexplained`; in ``MIN_RECORDS`` records or more the recording takes the verdict from any cause
-(``decides``, ``engine._recording_decides``), as for a clipped channel. A
+(``decides``, ``engine._recording_decides``), as for a clipped channel, but a memory that predicts the held-out
+half as a strip's holds do (``engine._held_by_memory``: a play written into a reading without its noise holds it to
+the bit). A
 channel held at the end of its range is the clipping test's (clipping.py), which reads the same runs at the extremes.
 
 ``FROZEN_RUN`` was set on the seen sets (tuning, fresh2, fresh32-36: 251 sessions): with the other channel moving,
