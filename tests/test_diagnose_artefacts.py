@@ -346,7 +346,9 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     """A laser's hold input wired to the step script's drive-on marker: the displacement repeats the reading it had at
     the edge through the plateau while the current goes on with its noise. One such record flags the session; two take
     the verdict from any cause (engine._recording_decides). A stretch filled in a gap of the time stamps (every
-    channel interpolated, not read) is not frozen, nor a held reading a memory's holds explain."""
+    channel interpolated, not read) is not frozen, nor a play written into the reading (its holds left without a jump),
+    nor a held reading a memory's holds explain."""
+    from labrig.diagnose.catalogue import _play as inject_play
     from labrig.diagnose.engine import MEMORY_HOLDS, Candidate, _recording_decides
     from labrig.diagnose.frozen import FROZEN_RUN, frozen_run
 
@@ -376,9 +378,15 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     # the same run with the current held too (a gap the import filled: every channel at once) is no frozen sensor;
     # a run the import marks as filled is not read
     st = next(r for r in copy.deepcopy(clean).all_records() if r.kind == "step")
+    e = int(np.flatnonzero(st.v > 0.5 * np.max(st.v))[0])
     x, i = st.d.copy(), st.i.copy()
-    x[1000:3000], i[1000:3000] = x[999], i[999]
+    x[e - 500:e + 1500], i[e - 500:e + 1500] = x[e - 501], i[e - 501]  # held across the edge, released on the rise
     assert frozen_run(x, st.i) >= 2000 and frozen_run(x, i) < FROZEN_RUN
     filled = np.zeros(x.size, bool)
-    filled[1000:3000] = True
+    filled[e - 500:e + 1500] = True
     assert frozen_run(x, st.i, filled) < FROZEN_RUN
+    # a play written into the reading without its noise holds it to the bit at each turn, and leaves the hold as the
+    # strip moves on (no jump): a memory's holds, not a frozen sensor
+    played = inject_play(st.d, 0.2 * np.ptp(st.d))
+    assert np.max(np.diff(np.flatnonzero(np.diff(played) != 0))) > FROZEN_RUN  # held for long at the fall
+    assert frozen_run(played, st.i) < FROZEN_RUN
