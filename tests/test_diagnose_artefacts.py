@@ -348,7 +348,7 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     the verdict from any cause (engine._recording_decides). A stretch filled in a gap of the time stamps (every
     channel interpolated, not read) is not frozen, nor a play written into the reading (its holds left without a jump),
     nor a held reading a memory's holds explain."""
-    from labrig.diagnose.catalogue import _play as inject_play
+    from labrig.diagnose.catalogue import _play as play
     from labrig.diagnose.engine import MEMORY_HOLDS, Candidate, _recording_decides
     from labrig.diagnose.frozen import FROZEN_RUN, frozen_run
 
@@ -387,6 +387,6 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     assert frozen_run(x, st.i, filled) < FROZEN_RUN
     # a play written into the reading without its noise holds it to the bit at each turn, and leaves the hold as the
     # strip moves on (no jump): a memory's holds, not a frozen sensor
-    played = inject_play(st.d, 0.2 * np.ptp(st.d))
+    played = play(st.d, 0.2 * np.ptp(st.d))
     assert np.max(np.diff(np.flatnonzero(np.diff(played) != 0))) > FROZEN_RUN  # held for long at the fall
     assert frozen_run(played, st.i) < FROZEN_RUN

@@ -204,6 +204,18 @@ def _play_df(a: np.ndarray, r: float) -> tuple[np.ndarray, np.ndarray]:
     return c[:, 1] / a, c[:, 3] / a
 
 
+def block_drive(st: StepFeature) -> np.ndarray:
+    """A step record's drive as the means of its blocks of ``st.q`` samples (the grid the step is compared on; a
+    last partial block left out)."""
+    n = (st.v_full.size // st.q) * st.q
+    return st.v_full[:n].reshape(-1, st.q).mean(axis=1)
+
+
+def at_full_rate(yb: np.ndarray, st: StepFeature) -> np.ndarray:
+    """Block values ``yb`` (``block_drive``'s grid) held over their samples, the last held to the record's end."""
+    return np.r_[np.repeat(yb, st.q), np.full(st.v_full.size - yb.size * st.q, yb[-1] if yb.size else 0.0)]
+
+
 def _hysteresis(th, ctx):
     w, r, gain = th
     return played_drive(w, [r], gain, ctx)
@@ -226,11 +238,7 @@ def played_drive(w: float, radii, gain: float, ctx: Context) -> "Prediction":
         sp = specimen_for(ctx.specimens, st.pressure_kPa)
         # the play runs on the 50 Hz block means the step is compared at: at full rate it would walk 30,000
         # samples per call, and the band only moves at the step's edges
-        q = st.q
-        n = (st.v_full.size // q) * q
-        vb = st.v_full[:n].reshape(-1, q).mean(axis=1)
-        yb = np.mean([_play(vb, r) for r in radii], axis=0)
-        played = np.r_[np.repeat(yb, q), np.full(st.v_full.size - n, yb[-1] if yb.size else 0.0)]
+        played = at_full_rate(np.mean([_play(block_drive(st), r) for r in radii], axis=0), st)
         veff = (1 - w) * st.v_full + w * played
         p.step_d[k] = gain * predict_step(sp, st, veff)[0]
     return p

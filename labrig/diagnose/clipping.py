@@ -54,10 +54,16 @@ EDGE = 2  # samples either side of a drive change: the current's spike and a slo
 KEEPS = 3  # samples after a wrap that stay at the new level (a dropout to a sentinel comes back at once)
 
 
+def run_bounds(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The runs of True, in order: their first indices and the indices just past their ends."""
+    edges = np.flatnonzero(np.diff(np.r_[0, np.asarray(mask).astype(np.int8), 0]))
+    return edges[0::2], edges[1::2]
+
+
 def run_lengths(mask: np.ndarray) -> np.ndarray:
     """The lengths of the runs of True, in order."""
-    edges = np.flatnonzero(np.diff(np.r_[0, np.asarray(mask).astype(np.int8), 0]))
-    return edges[1::2] - edges[0::2]
+    starts, ends = run_bounds(mask)
+    return ends - starts
 
 
 def longest_run(mask: np.ndarray) -> int:

@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from labrig.diagnose.clipping import run_lengths
+from labrig.diagnose.clipping import run_bounds
 from labrig.estimate.session_data import SessionData
 
 FROZEN_RUN = 100  # samples
@@ -56,11 +56,10 @@ def frozen_run(x: np.ndarray, other: np.ndarray, filled: np.ndarray | None = Non
     if filled is not None and np.size(filled) == x.size:
         same &= ~(filled[1:] | filled[:-1])
     moving = np.diff(other) != 0
-    edges = np.flatnonzero(np.diff(np.r_[0, same.astype(np.int8), 0]))
     step = np.abs(dx[~same])
     largest = float(np.quantile(step, 0.99)) if step.size else 0.0  # the reading's largest moves from sample to sample
     best = 0
-    for a, b in zip(edges[0::2], edges[1::2]):
+    for a, b in zip(*run_bounds(same)):
         # a run of readings x[a..b]; released with a jump to where the strip went meanwhile (a hold, a reboot), not
         # the continuous exit of a memory's hold at a turn of the motion
         released = b < dx.size and abs(dx[b]) > RELEASE * largest
@@ -76,7 +75,7 @@ def frozen(sd: SessionData) -> dict[str, Any]:
     longest = 0
     for r in sd.all_records():
         for ch, (own, other) in PAIRS.items():
-            run = frozen_run(getattr(r, own), getattr(r, other), getattr(r, "filled", None))
+            run = frozen_run(getattr(r, own), getattr(r, other), r.filled)
             longest = max(longest, run)
             if run >= FROZEN_RUN:
                 per.setdefault(ch, []).append(r.name)

@@ -27,7 +27,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from labrig.diagnose.catalogue import Context, Prediction, _drive, baseline, by_records, frf_by_pressure
+from labrig.diagnose.catalogue import (Context, Prediction, _drive, at_full_rate, baseline, block_drive, by_records,
+                                      frf_by_pressure)
 from labrig.diagnose.features import predict_step, specimen_for
 from labrig.physics import transfer
 
@@ -64,27 +65,22 @@ def relay_states(v: np.ndarray, alpha: np.ndarray, beta: np.ndarray, start: np.n
     return np.where(up > down, 1.0, np.where(down > up, -1.0, start[None, :]))
 
 
-def _block_drive(st) -> np.ndarray:
-    n = (st.v_full.size // st.q) * st.q
-    return st.v_full[:n].reshape(-1, st.q).mean(axis=1)
-
-
 def _relays(ctx: Context) -> dict:
     """The session's relay grid and what the drive makes of it (made once for the records' lists)."""
 
     def make() -> dict:
-        amps = [abs(_drive(s)) for s in ctx.sines] + [float(np.max(np.abs(st.v_full))) for st in ctx.steps if st.v_full.size]
-        vm = max(amps, default=1.0) or 1.0
+        sine_amps = np.array([abs(_drive(s)) for s in ctx.sines])
+        vm = max([*sine_amps, *(float(np.max(np.abs(st.v_full))) for st in ctx.steps if st.v_full.size)], default=1.0) or 1.0
         c, b = (g.ravel() * vm for g in np.meshgrid(COERCIVITY_GRID, BIAS_GRID, indexing="ij"))
         alpha, beta = b + c, b - c
         keep = (alpha <= 1.05 * vm) & (beta >= -1.05 * vm)  # the others never switch: the drive never reaches them
         c, b, alpha, beta = c[keep], b[keep], alpha[keep], beta[keep]
         start = rest_states(b)
-        harm = relay_harmonics(np.array([abs(_drive(s)) for s in ctx.sines]), alpha, beta) if ctx.sines else None
+        harm = relay_harmonics(sine_amps, alpha, beta) if ctx.sines else None
         steps = []
         for st in ctx.steps:
-            states = relay_states(_block_drive(st), alpha, beta, np.zeros_like(b))  # 0: not switched yet
-            steps.append((states, states != 0))
+            states = relay_states(block_drive(st), alpha, beta, np.zeros_like(b))  # 0: not switched yet
+            steps.append((states, (states != 0).astype(float)))
         straddle = (beta < 0) & (alpha > 0)  # held at 0 V in whatever state the records before left them
         return {"vm": vm, "c": c / vm, "b": b / vm, "harm": harm, "steps": steps, "start": start, "straddle": straddle}
 
@@ -129,9 +125,8 @@ def preisach_drive(th, ctx: Context) -> Prediction:
     start = np.where(r["straddle"], np.clip(r["start"] + shift, -1.0, 1.0), r["start"])
     for k, st in enumerate(ctx.steps):
         states, switched = r["steps"][k]
-        yb = (np.where(switched, states, start[None, :]) - start[None, :]) @ mu * vm
-        n = yb.size * st.q
-        relayed = np.r_[np.repeat(yb, st.q), np.full(st.v_full.size - n, yb[-1] if yb.size else 0.0)]
+        # each relay's state less its start: its state where it switched (0 before), less the start there
+        relayed = at_full_rate((states @ mu - switched @ (start * mu)) * vm, st)
         sp = specimen_for(ctx.specimens, st.pressure_kPa)
         p.step_d[k] = gain * predict_step(sp, st, (1 - w) * st.v_full + w * relayed)[0]
     return p
