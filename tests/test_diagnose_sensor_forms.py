@@ -7,6 +7,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from labrig.diagnose import aligned
 from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.catalogue import Context, frf_by_pressure, sensor_read
 from labrig.diagnose.families import _nearest, band_delay, band_delay_tf, ema_tf, lowpass, lowpass_tf, per_sample_smoothing
@@ -248,3 +249,41 @@ def test_the_knee_is_the_cubic_at_its_lowest_power_and_spares_the_small_readings
     large.step_d = [a_top * np.clip(5 * t, 0.0, 1.0)]
     got = knee(th, large).step_d[0]
     assert got[2] == pytest.approx(large.step_d[0][2], rel=1e-9) and got[-1] < 0.95 * a_top
+
+
+def _script_lag(d: np.ndarray, v: np.ndarray, nw: int) -> int:
+    """An export script's alignment, written plainly: the lag in whole samples within +-nw that maximises
+    sum v[k] d[k + l] of the two records without their means (numpy.correlate, no FFT)."""
+    v, d = v - v.mean(), d - d.mean()
+    n = d.size
+    score = {l: float(np.dot(v[max(0, -l):n - max(0, l)], d[max(0, l):n - max(0, -l)])) for l in range(-nw, nw + 1)}
+    return max(score, key=score.get)
+
+
+def test_the_aligned_form_finds_the_lag_an_alignment_script_finds_and_pulls_fast_sines_onto_the_drive():
+    """A sine lagging its drive by phi is found late by phi/omega folded into half a period, in whole samples, or by
+    the search's edge where that lies beyond it; a sluggish step by the window's edge; the form shifts every record's
+    displacement back by that lag: the fast sines' phase onto the drive's, the slow ones' W earlier, the gain kept."""
+    fs, window = 1000.0, 0.04
+    nw = int(round(window * fs))
+    for f, phi in ((20.0, 1.9), (5.0, 0.9), (0.5, 0.6), (20.0, -2.8)):
+        t = np.arange(int(4 * fs)) / fs
+        v, d = np.sin(2 * np.pi * f * t), 0.7 * np.sin(2 * np.pi * f * t - phi)
+        assert aligned.sine_lag(phi, f, window, fs) == pytest.approx(_script_lag(d, v, nw) / fs, abs=1.01 / fs)
+    t = np.arange(int(6 * fs)) / fs
+    v = ((t > 1.0) & (t < 4.0)).astype(float)
+    d = timeresp.simulate(lambda z: 1 / (1 + 0.3 * z), v, fs)  # a strip slower than the window
+    c = aligned.correlation(d, v)
+    assert aligned.step_lag(c, d.size, fs, window) == pytest.approx(_script_lag(d, v, nw) / fs, abs=1.01 / fs)
+    assert aligned.step_lag(c, d.size, fs, window) == pytest.approx(window)
+    ctx = _context(freqs=(0.5, 5.0, 20.0))
+    for sn in ctx.sines:
+        sn.fs = fs
+    p = aligned.aligned(np.array([0.03]), ctx)
+    for k, sn in enumerate(ctx.sines):
+        lag = -np.angle(ctx.Hd[k]) / (2 * np.pi * sn.f)
+        assert abs(p.Hd[k]) == pytest.approx(abs(ctx.Hd[k]), rel=1e-12)
+        if abs(lag) < 0.03:
+            assert abs(np.angle(p.Hd[k])) < 2 * np.pi * sn.f * 0.5 / fs + 1e-9  # onto the drive, within half a sample
+        else:
+            assert np.angle(p.Hd[k] / ctx.Hd[k]) == pytest.approx(2 * np.pi * sn.f * 0.03 * np.sign(lag), abs=1e-9)

@@ -403,6 +403,8 @@ def _starts(name: str, ext) -> list[np.ndarray]:
         starts += [np.array([0.97, -0.02, 0.5])]  # walking towards the tip
     if ext.form == "room_cycle":
         starts += [np.array([0.0, 0.0, per, 0.0, 30.0, 1.0, 0.0]) for per in (900.0, 3600.0)]  # the cycle's period: a and b are linear
+    if ext.form == "aligned":
+        starts += [np.array([w]) for w in (0.01, 0.025, 0.1, 0.2)]  # W moves the shifts in steps where a record's own lag lies
     if ext.form == "per_sample":
         starts += [np.array([0.15])]  # a lag of several samples
     if ext.form == SECOND_MODE.form:

@@ -10,7 +10,7 @@ names the effect by its signature; the form found is reported (``extended.form``
 | back_relaxation | single time constant; fractional (Cole-Cole) 1 - K2/(1 + (tau s)^beta), a spread of time constants; fast-slow pair |
 | faradaic_current | odd polynomial; full polynomial g1 v + g2 v^2 + g3 v^3 (one-sided electrolysis: DC and even harmonics); asymmetric Butler-Volmer / Tafel exponential; Langmuir adsorption peaks; a transport-limited wave; a wave fading (or gathering) with the session's clock |
 | hysteresis | play operator on the drive; Prandtl-Ishlinskii operators (a uniform density of plays) on the drive and in the displacement path; play operator in the displacement path (the sensor side); a pinched (flag) loop past a threshold there; a dry contact whose hold follows the tip's position; Bouc-Wen loop in the displacement path; a Preisach operator on the drive (relays with a density over coercivity and bias: preisach.py) |
-| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path); a logger's moving average run per sample (a lag of so many samples at each record's rate) |
+| time_delay | pure delay; first-order lag (a sensor's output filter); each channel's own delay (the current's, or the drive monitor's); each channel's own first-order low-pass (a shunt amplifier's filter on the current); a low-pass of a few poles; the slow share of the reading late (a tracking stage's slow path); a logger's moving average run per sample (a lag of so many samples at each record's rate); each record re-aligned on the drive by cross-correlation within a window (aligned.py) |
 | sensor_offset | the spot along the strip; a rigid flag at the tip read beyond it; a footprint read at its point nearest the sensor; the spot walking along the strip with session time |
 | strain_resistance | the bench's gauge physics; an instantaneous gain loss with the bend (either or one side), linear, saturating or as a power of it |
 | dehydration | exponential; linear; saturating; power of time t^n (n = 1/2: Fickian); falling rate; two-stage sorption; by charge; from an onset inside the session; set anew at each clamp setting |
@@ -29,7 +29,7 @@ from scipy.signal import lfilter
 
 from labrig.diagnose.catalogue import (CATALOGUE, Context, Extension, _drive, _play, _play_df, baseline, delayed,
                                       played_drive, sensor_read, step_through)
-from labrig.diagnose import contact, flag, preisach, slow_forms as slow, station
+from labrig.diagnose import aligned, contact, flag, preisach, slow_forms as slow, station
 from labrig.diagnose.arc import curled_arc, drifting_arc, knee
 from labrig.diagnose.features import LINE_CHANNELS, LINE_HZ, specimen_for, step_grid
 from labrig.physics import timeresp
@@ -622,6 +622,10 @@ FAMILIES["time_delay"] += [
     _form("time_delay", "per_sample", ("alpha",), (0.5,), (0.02,), (1.0,), per_sample_smoothing,
           "the displacement through a moving average run per sample, alpha/(1 - (1 - alpha) e^{-s/fs}) at each record's "
           "own rate: a logger's smoothing, its lag a number of samples and so a different time at each rate", refit_mechanics=True),
+    _form("time_delay", "aligned", ("window_s",), (0.05,), (0.0,), (0.5,), aligned.aligned,
+          "each record's displacement shifted by the lag that best correlates it with the drive within +-W (an export "
+          "script aligning the reading on the drive): the strip's own lag taken out record by record, up to W (aligned.py)",
+          refit_mechanics=True),
 ]
 FAMILIES["sensor_offset"] += [
     _form("sensor_offset", "flag", ("lever_over_L",), (0.1,), (-0.5,), (1.0,), _flag,
