@@ -390,3 +390,44 @@ def test_a_reading_frozen_while_the_current_goes_on_takes_the_verdict(clean):
     played = play(st.d, 0.2 * np.ptp(st.d))
     assert np.max(np.diff(np.flatnonzero(np.diff(played) != 0))) > FROZEN_RUN  # held for long at the fall
     assert frozen_run(played, st.i) < FROZEN_RUN
+
+
+def test_a_reading_that_moves_before_the_drive_takes_the_verdict_but_from_a_lead(clean):
+    """An export's zero-phase smoothing (scipy.signal.sosfiltfilt, a Butterworth run forward and backward) or a
+    Savitzky-Golay smoother spreads each edge of the response to both sides: the reading leaves its rest before the
+    drive moves, which no strip does. Two such step records take the verdict from any cause but a time delay (a
+    reading read late against its drive record leads it too); the same filter run forward only (a sensor's own filter,
+    late, not early) and an interpolation's half-sample spread are not read."""
+    from scipy import signal
+
+    from labrig.diagnose.engine import Candidate, _recording_decides
+    from labrig.diagnose.precursor import edge_precursors, moves_early
+
+    quiet = {"flagged": False}
+    a = art.artefacts(clean)
+    assert not a["precursor"]["flagged"] and a["precursor"]["largest"] < 0.5, a["precursor"]
+    steps = [r for r in clean.all_records() if r.kind == "step"]
+    sos = signal.butter(2, 10.0, fs=steps[0].fs, output="sos")
+    # forward only (causal, late) and a half-sample interpolation: not early
+    for x in (signal.sosfilt(sos, steps[0].d - steps[0].d[0]) + steps[0].d[0], 0.5 * (steps[0].d + np.r_[steps[0].d[1:], steps[0].d[-1]])):
+        assert not moves_early(edge_precursors(steps[0].v, x, steps[0].fs))
+    for channel, smooth in (("displacement", lambda r: setattr(r, "d", signal.sosfiltfilt(sos, r.d))),
+                            ("current", lambda r: setattr(r, "i", signal.savgol_filter(r.i, int(0.06 * r.fs) | 1, 2)))):
+        for n, decides in ((1, False), (2, True)):
+            sd = copy.deepcopy(clean)
+            for r in [r for r in sd.all_records() if r.kind == "step"][:n]:
+                smooth(r)
+            b = art.artefacts(sd)
+            assert b["precursor"]["flagged"] and b["precursor"]["decides"] is decides and b["precursor"]["records"] == n, b["precursor"]
+            assert b["precursor"]["channels"] == [channel] and art.level(b) > 1.0
+            assert _recording_decides(quiet, quiet, b, [Candidate("hysteresis", {}, -1e4, 1.0, 0.07, 1.0)]) is decides
+            assert "before the drive's edges" in art.detail(b)
+    # a displacement read 30 ms early against its drive record moves before the edges as well: a time delay explains it
+    sd = copy.deepcopy(clean)
+    for r in [r for r in sd.all_records() if r.kind == "step"]:
+        k = int(round(0.03 * r.fs))
+        r.d = np.r_[r.d[k:], np.full(k, r.d[-1])]
+    b = art.artefacts(sd)
+    assert b["precursor"]["decides"] and b["precursor"]["channels"] == ["displacement"]
+    assert not _recording_decides(quiet, quiet, b, [Candidate("time_delay", {}, -1e4, 1.0, 0.1, 1.0)])
+    assert _recording_decides(quiet, quiet, b, [])

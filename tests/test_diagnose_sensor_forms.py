@@ -253,7 +253,7 @@ def test_the_knee_is_the_cubic_at_its_lowest_power_and_spares_the_small_readings
 
 def _script_lag(d: np.ndarray, v: np.ndarray, nw: int) -> int:
     """An export script's alignment, written plainly: the lag in whole samples within +-nw that maximises
-    sum v[k] d[k + l] of the two records without their means (numpy.correlate, no FFT)."""
+    sum v[k] d[k + l] of the two records without their means (a dot product at every lag, no FFT)."""
     v, d = v - v.mean(), d - d.mean()
     n = d.size
     score = {l: float(np.dot(v[max(0, -l):n - max(0, l)], d[max(0, l):n - max(0, -l)])) for l in range(-nw, nw + 1)}

@@ -63,6 +63,7 @@ from labrig.diagnose.drive_locked import lattice_chance, locked
 from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
 from labrig.diagnose.detrended import detrended
 from labrig.diagnose.frozen import FROZEN_RUN, frozen
+from labrig.diagnose.precursor import precursor
 from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
@@ -374,8 +375,10 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["locked"] = locked(per, CHANNELS, MIN_RECORDS)  # foreign lines on the drive's lattice (drive_locked.py)
     out["detrended"] = detrended(sd)  # the step records' displacement stored with its mean taken off (detrended.py)
     out["frozen"] = frozen(sd)  # a channel repeating one reading while the other goes on (frozen.py)
+    out["precursor"] = precursor(sd)  # a reading that leaves its rest before the drive's edges (precursor.py)
     out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
-                                                      "clipped", "wrapped", "arming", "locked", "detrended", "frozen"))
+                                                      "clipped", "wrapped", "arming", "locked", "detrended", "frozen",
+                                                      "precursor"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -387,7 +390,8 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "load_cell_share": len(out["load_cell"]["records"]) / max(out["load_cell"]["read"], 1) if out["load_cell"]["flagged"] else 0.0,
                   "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0,
                   "detrended": 2.0 if out["detrended"]["flagged"] else 0.0,
-                  "frozen_run": out["frozen"]["longest_run"] if out["frozen"]["flagged"] else 0}
+                  "frozen_run": out["frozen"]["longest_run"] if out["frozen"]["flagged"] else 0,
+                  "precursor": out["precursor"]["largest"] if out["precursor"]["flagged"] else 0.0}
     return out
 
 
@@ -405,7 +409,8 @@ def level(a: dict[str, Any]) -> float:
     return float(max(m["burst_z"] / BURST_Z, m["line_power"] / LINE_POWER, m.get("wander", 0.0) / WANDER_POWER,
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
                      m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0),
-                     m.get("locked", 0.0), m.get("detrended", 0.0), m.get("frozen_run", 0) / FROZEN_RUN))
+                     m.get("locked", 0.0), m.get("detrended", 0.0), m.get("frozen_run", 0) / FROZEN_RUN,
+                     m.get("precursor", 0.0)))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -465,6 +470,12 @@ def detail(a: dict[str, Any]) -> str:
         parts.append(f"the {' and '.join(z['channels'])} repeats one reading for up to {z['longest_run']} samples while the other channel "
                      f"goes on with its noise, in {_records(sorted({n for v in z['names'].values() for n in v}))}: a sensor's output held "
                      f"(a hold input wired to a trigger, a controller rebooting, a logger repeating its last frame), not the strip")
+    if a.get("precursor", {}).get("flagged"):
+        q = a["precursor"]
+        parts.append(f"the {' and '.join(q['channels'])} leaves its rest before the drive's edges (by {q['z']:g}+ times its noise and "
+                     f"{q['share']:.0%}+ of its response) in {_records(sorted({n for v in q['names'].values() for n in v}), 'step ')}: "
+                     f"processing that is not causal (a filter run forward and backward, a centred or spline smoother, an FFT filter), "
+                     f"not the strip, which cannot move before its drive")
     if a.get("load_cell", {}).get("flagged"):
         c = a["load_cell"]
         parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "

@@ -807,16 +807,24 @@ def _held_by_memory(named: list[Candidate], recording: dict[str, Any], check: st
             and recording[check]["channels"] == ["displacement"])
 
 
+def _leads_explain(named: list[Candidate]) -> bool:
+    """Whether the first named cause is a time delay: a reading late against its drive record (the drive's monitor late,
+    a reading aligned on the drive) leads that record, and moves before its edges as a smoother's does (precursor.py)."""
+    return bool(named) and named[0].name == "time_delay"
+
+
 def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording: dict[str, Any],
                        named: list[Candidate]) -> bool:
     """Whether the recording takes the verdict from any cause (``unexplained``, none accepted): a displacement on a clock
     of its own, a drive record the current does not follow, a channel held at its range's end (but a memory's holds)
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
     drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py), a reading frozen
-    while the other channel goes on (frozen.py, but a memory's holds)."""
+    while the other channel goes on (frozen.py, but a memory's holds), a reading that moves before the drive's edges
+    (precursor.py, but a time delay's lead)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
                 or recording["locked"]["flagged"] or recording["detrended"]["flagged"]
                 or (recording["frozen"]["decides"] and not _held_by_memory(named, recording, "frozen"))
+                or (recording["precursor"]["decides"] and not _leads_explain(named))
                 or (recording["clipped"]["flagged"] and not _held_by_memory(named, recording)))
 
 
