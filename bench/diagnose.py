@@ -233,7 +233,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh34": "fresh34 held-out set (diagnosed once unseen at 089db7d; seen since)",
           "fresh35": "fresh35 held-out set (diagnosed once unseen at 8bab252; seen since)",
           "fresh36": "fresh36 held-out set (diagnosed once unseen at 4c5e4c5; seen since)",
-          "fresh37": "fresh37 held-out set (unseen: diagnosed once, with the code frozen)"}
+          "fresh37": "fresh37 held-out set (diagnosed once unseen at 5c5a638; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:
