@@ -418,6 +418,11 @@ def _records(names: list[str], kind: str = "") -> str:
     return f"{len(names)} {kind}records ({', '.join(names[:4])}{', ...' if len(names) > 4 else ''})"
 
 
+def _by_channel(names: dict[str, list[str]]) -> list[str]:
+    """The records a check named on any channel ({channel: records}), each once, sorted."""
+    return sorted({n for v in names.values() for n in v})
+
+
 def detail(a: dict[str, Any]) -> str:
     """One line for the report and the JSON's ``residual.where``: what the recording shows and where."""
     parts = []
@@ -468,12 +473,12 @@ def detail(a: dict[str, Any]) -> str:
     if a.get("frozen", {}).get("flagged"):
         z = a["frozen"]
         parts.append(f"the {' and '.join(z['channels'])} repeats one reading for up to {z['longest_run']} samples while the other channel "
-                     f"goes on with its noise, in {_records(sorted({n for v in z['names'].values() for n in v}))}: a sensor's output held "
+                     f"goes on with its noise, in {_records(_by_channel(z['names']))}: a sensor's output held "
                      f"(a hold input wired to a trigger, a controller rebooting, a logger repeating its last frame), not the strip")
     if a.get("precursor", {}).get("flagged"):
         q = a["precursor"]
         parts.append(f"the {' and '.join(q['channels'])} leaves its rest before the drive's edges (by {q['z']:g}+ times its noise and "
-                     f"{q['share']:.0%}+ of its response) in {_records(sorted({n for v in q['names'].values() for n in v}), 'step ')}: "
+                     f"{q['share']:.0%}+ of its response) in {_records(_by_channel(q['names']), 'step ')}: "
                      f"processing that is not causal (a filter run forward and backward, a centred or spline smoother, an FFT filter), "
                      f"not the strip, which cannot move before its drive")
     if a.get("load_cell", {}).get("flagged"):
