@@ -506,7 +506,8 @@ class _Scorer:
             # the spectra's values stand only where the branch reconciles the current with them: a current left
             # structured on them (fresh30's tarnished contact pads, a resistance falling with the current: 7.5 x its
             # accuracy on the current's FRF after the best branch) is a disagreement the branch does not explain
-            best = min([best, *(c for c in (self.on_spectra(name, ext) for ext in family) if self.reconciles(c))], key=_choice)
+            best = min([best, *(c for c, join in ((self.on_spectra(name, ext), f) for ext, f in zip(family, forms))
+                                if self.reconciles(c, join))], key=_choice)
         if name == "dehydration" and self.wet_session is not None:
             # evidence of a drying the baseline half took in: judged again on the wet strip (wet_strip.py), in the
             # forms that predict best on the baseline; the baseline's absorbed drying reorders them (a form second on
@@ -539,10 +540,20 @@ class _Scorer:
             self._spectra_base = (chi2(blocks(baseline(cf), cf))[0], nrmse(blocks(baseline(ch), ch), self.where, self.accuracy))
         return self._spectra_base
 
-    def reconciles(self, c: Candidate) -> bool:
-        """Whether ``c`` leaves every current block of the held-out half within ``STRUCTURE_MARGIN`` of its accuracy."""
+    def reconciles(self, c: Candidate, join: Candidate | None = None) -> bool:
+        """Whether ``c`` (a form on the spectra's values) leaves every current block of the held-out half within
+        ``STRUCTURE_MARGIN`` of its accuracy, or leaves the current no further from it (the sum of the current blocks'
+        squares in accuracy units) than the same form on the join's values, ``join``, does: the current then disagrees
+        with the spectra by no more than the form's own approximation leaves on the strip the current itself pinned."""
         rms = block_rms(c.held)
-        return all(rms[k] <= STRUCTURE_MARGIN * self.accuracy.get(k, 1.0) for k in CURRENT_BLOCKS if k in rms)
+        keys = [k for k in CURRENT_BLOCKS if k in rms]
+        if all(rms[k] <= STRUCTURE_MARGIN * self.accuracy.get(k, 1.0) for k in keys):
+            return True
+        if join is None or join.held is None:
+            return False
+        on_join = block_rms(join.held)
+        excess = lambda r: sum((r[k] / self.accuracy.get(k, 1.0)) ** 2 for k in keys if k in r)  # noqa: E731
+        return all(k in on_join for k in keys) and excess(rms) <= excess(on_join)
 
     def wet(self, c: Candidate) -> tuple[Candidate | None, Callable[[float], Candidate | None], float] | None:
         """The drying form ``c`` (fitted on the baseline) fitted again on the seed-000 fit of the session corrected to
