@@ -60,8 +60,7 @@ def aligned(th, ctx: Context) -> Prediction:
     """The displacement of every record shifted back by the lag an alignment on the drive over +-W finds
     (``sine_lag``, ``step_lag``): exp(+j omega lag) on each sine's FRF, each step's response read ``lag`` earlier
     (its last value held)."""
-    (window,) = th
-    window = abs(float(window))
+    window = float(th[0])
     p = baseline(ctx)
     for k, s in enumerate(ctx.sines):
         lag = sine_lag(-float(np.angle(p.Hd[k])), s.f, window, s.fs)

@@ -60,6 +60,14 @@ def run_bounds(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return edges[0::2], edges[1::2]
 
 
+def record_tally(per: dict[str, list[str]], min_records: int) -> dict:
+    """What a per-channel record check found ({channel: the records it named}): the records named on any channel, the
+    channels, up to eight names each; flagged at one record, deciding the verdict at ``min_records``."""
+    records = len({name for names in per.values() for name in names})
+    return {"records": records, "channels": sorted(per), "names": {ch: v[:8] for ch, v in per.items()},
+            "flagged": records >= 1, "decides": records >= min_records}
+
+
 def run_lengths(mask: np.ndarray) -> np.ndarray:
     """The lengths of the runs of True, in order."""
     starts, ends = run_bounds(mask)

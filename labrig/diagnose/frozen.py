@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from labrig.diagnose.clipping import run_bounds
+from labrig.diagnose.clipping import record_tally, run_bounds
 from labrig.estimate.session_data import SessionData
 
 FROZEN_RUN = 100  # samples
@@ -79,6 +79,4 @@ def frozen(sd: SessionData) -> dict[str, Any]:
             longest = max(longest, run)
             if run >= FROZEN_RUN:
                 per.setdefault(ch, []).append(r.name)
-    records = len({name for v in per.values() for name in v})
-    return {"records": records, "channels": sorted(per), "names": {ch: v[:8] for ch, v in per.items()},
-            "longest_run": longest, "frozen_run": FROZEN_RUN, "flagged": records >= 1, "decides": records >= MIN_RECORDS}
+    return {**record_tally(per, MIN_RECORDS), "longest_run": longest, "frozen_run": FROZEN_RUN}

@@ -32,6 +32,8 @@ from typing import Any
 
 import numpy as np
 
+from labrig.diagnose.arming import CHANNELS
+from labrig.diagnose.clipping import record_tally
 from labrig.estimate.session_data import SessionData
 
 PRE_S = 0.04  # the window before the edge read for a precursor
@@ -41,7 +43,6 @@ GUARD = 2  # samples next to the edge not read
 Z = 20.0
 SHARE = 0.01
 MIN_RECORDS = 2
-CHANNELS = {"displacement": "d", "current": "i"}
 
 
 def edge_precursors(v: np.ndarray, x: np.ndarray, fs: float) -> list[tuple[float, float]]:
@@ -92,6 +93,4 @@ def precursor(sd: SessionData) -> dict[str, Any]:
                 largest = max(largest, min(min(abs(z) / Z, abs(s) / SHARE) for z, s in edges))
             if moves_early(edges):
                 per.setdefault(ch, []).append(r.name)
-    records = len({name for v in per.values() for name in v})
-    return {"records": records, "channels": sorted(per), "names": {ch: v[:8] for ch, v in per.items()},
-            "largest": float(largest), "z": Z, "share": SHARE, "flagged": records >= 1, "decides": records >= MIN_RECORDS}
+    return {**record_tally(per, MIN_RECORDS), "largest": float(largest), "z": Z, "share": SHARE}
