@@ -8,6 +8,7 @@ import pytest
 
 from labrig.diagnose import engine
 from labrig.diagnose.catalogue import Context, frf_by_pressure
+from labrig.diagnose.current_reading import CURRENT_READING
 from labrig.diagnose.rivals import DRIVE_PATH, VARYING_SERIES, distorted_drive, drive_map, rival_detail, varying_series
 from labrig.physics import presets, transfer
 
@@ -74,7 +75,8 @@ def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     def scorer_with(rival):
         def score_form(name, ext):
             fitted.append(name)
-            assert ext in (DRIVE_PATH, VARYING_SERIES)  # the varying element is fitted wherever the map is
+            # the varying element is fitted wherever the map is; a compressed current reading against every faradaic branch
+            assert ext in (DRIVE_PATH, VARYING_SERIES, CURRENT_READING)
             return rival if ext is DRIVE_PATH else _cand("drive_path", 0.9, _held(frf_i=5.0, harm_i=9.0, harm_d=4.0))
         return SimpleNamespace(score_form=score_form)
 
@@ -86,10 +88,10 @@ def test_the_rival_takes_the_verdict_only_by_its_signature(monkeypatch):
     assert engine._rival(scorer_with(_cand("drive_path", 0.18, _held(frf_i=1.0, harm_i=1.0, harm_d=4.0))), [faradaic], base, acc) is None
     fitted.clear()
     moves_all = _cand("faradaic_current", 0.25, _held(frf_i=1.0, harm_i=1.0, harm_d=1.0))
-    assert engine._rival(scorer_with(rival), [moves_all], base, acc) is None and not fitted
+    assert engine._rival(scorer_with(rival), [moves_all], base, acc) is None and "drive_path" not in fitted
     # only a gain left where it was (no harmonic block untouched): nothing for a static map to claim, not fitted
     leaves_gain = _cand("faradaic_current", 0.25, _held(frf_i=5.0, harm_i=1.0, harm_d=1.0))
-    assert engine._rival(scorer_with(rival), [leaves_gain], base, acc) is None and not fitted
+    assert engine._rival(scorer_with(rival), [leaves_gain], base, acc) is None and "drive_path" not in fitted
 
 
 def test_a_varying_series_element_changes_both_channels_by_the_current_it_carries():

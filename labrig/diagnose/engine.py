@@ -28,7 +28,8 @@ from labrig.diagnose.nuisance import FIT_TOL, VALLEY_BOUND, Refit, refit
 from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.drive_line import series_contexts, series_reading
-from labrig.diagnose import second_mode
+from labrig.diagnose import current_reading, second_mode
+from labrig.diagnose.current_reading import CURRENT_READING
 from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, VARYING_SERIES, rival_detail
 from labrig.diagnose.second_mode import SECOND_MODE
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
@@ -746,6 +747,11 @@ class Rival:
                 "instead_of": self.instead_of.name, "its_ratio": self.instead_of.heldout_ratio, "blocks_it_lowers": self.lowered}
 
 
+# the rivals by their extension's name: the JSON key each is reported under, and its ``residual.where`` entry
+RIVAL_KEYS = {"drive_path": "drive_path", SECOND_MODE.name: "second_mode", CURRENT_READING.name: "current_reading"}
+RIVAL_DETAIL = {"drive_path": rival_detail, "second_mode": second_mode.detail, "current_reading": current_reading.detail}
+
+
 def _rival_forms(structured: list[str], untouched: list[str]) -> list:
     """The drive-path rival's forms worth fitting, each where the named cause leaves what that form would explain: a
     static map where a harmonic block is left where the base put it (a distorted drive shows first as the distortion
@@ -782,6 +788,10 @@ def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], 
     if second_mode.challenges(named[0].name, structured):  # its signature: the named cause's error halved (second_mode.py)
         r = scorer.score_form(SECOND_MODE.name, SECOND_MODE)
         if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and second_mode.takes(r.heldout_ratio, named[0].heldout_ratio):
+            won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
+    if current_reading.challenges(named[0].name, structured):  # its signature: the named cause's error halved (current_reading.py)
+        r = scorer.score_form(CURRENT_READING.name, CURRENT_READING)
+        if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and current_reading.takes(r.heldout_ratio, named[0].heldout_ratio):
             won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
     return min(won, key=lambda w: w.fit.heldout_ratio, default=None)
 
@@ -872,8 +882,9 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
     cands = _rank(scorer, list(CATALOGUE))
     named = _significant(cands, where, base_rms=held_rms, accuracy=accuracy, excess=EXCESS_EFFECT)
     rival = _rival(scorer, named, held_rms, accuracy)
-    drive_path = None if rival is None or rival.fit.name == SECOND_MODE.name else rival.report()
-    coupled = None if rival is None or rival.fit.name != SECOND_MODE.name else rival.report()
+    rivals = dict.fromkeys(RIVAL_KEYS.values(), None)  # the JSON's key per kind of rival: the one that won, reported
+    if rival is not None:
+        rivals[RIVAL_KEYS[rival.fit.name]] = rival.report()
     if rival is not None:
         named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
     clock = clock_offset(feats.sines, FRF_FLOOR)
@@ -986,7 +997,8 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         level = monitor["worst"]["drive_share"] / monitor["share_limit"]
         residual_where.insert(0, {"block": "drive_monitor", "level": level, "over_accuracy": level, "detail": monitor_detail(monitor)})
     if rival is not None:
-        residual_where.insert(0, rival_detail(drive_path) if drive_path else second_mode.detail(coupled))
+        key = RIVAL_KEYS[rival.fit.name]
+        residual_where.insert(0, RIVAL_DETAIL[key](rivals[key]))
     if recording["flagged"]:
         level = artefact_level(recording)  # the worst artefact over its threshold
         residual_where.insert(0, {"block": "recording", "level": level, "over_accuracy": level,
@@ -1014,10 +1026,9 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
         "clock": clock,
         "recording": recording,
         "drive_monitor": monitor,
-        # a distortion of the drive before the strip, which took the verdict from a named cause (rivals.py)
-        "drive_path": drive_path,
-        # a second resonator coupled to the strip's first mode, which took the verdict from a named cause (second_mode.py)
-        "second_mode": coupled,
+        # a distortion of the drive before the strip (rivals.py), a second resonator coupled to the strip's first mode
+        # (second_mode.py), a current read short (current_reading.py): whichever took the verdict from a named cause
+        **rivals,
         "residual": {"where": residual_where, "structure_margin": STRUCTURE_MARGIN,
                      "test": "a block's RMS held-out residual, in units of the session's noise and model floor, above "
                              "structure_margin x its attainable accuracy is structure"},
