@@ -12,7 +12,7 @@ from labrig.diagnose.catalogue import Context, frf_by_pressure
 from labrig.diagnose.current_reading import CURRENT_READING, compress, compressed_current
 from labrig.diagnose.features import StepFeature
 from labrig.physics import presets, transfer
-from test_diagnose_rival import _cand, _held
+from test_diagnose_rival import _cand, _held, scorer_fitting
 
 P = 1837.0
 
@@ -79,13 +79,7 @@ def test_the_reading_takes_the_verdict_only_where_it_halves_a_current_causes_err
     base, acc = {"harm_i": 33.0, "frf_i": 1.2}, {"harm_i": 1.0, "frf_i": 1.0}
     faradaic = _cand("faradaic_current", 0.47, _held(harm_i=12.4, frf_i=2.4))
     fitted = []
-
-    def scorer_with(r):
-        def score_form(name, ext):
-            fitted.append(ext)
-            assert ext is CURRENT_READING
-            return r
-        return SimpleNamespace(score_form=score_form)
+    scorer_with = scorer_fitting(CURRENT_READING, fitted)
 
     short = engine.Candidate("current_reading", {"sat_A": 0.0119, "sharpness": 5.6}, -1.3e5, 0.21, 0.21, 0.0, 0.21,
                              held=_held(harm_i=0.9, frf_i=1.2), ext=CURRENT_READING)

@@ -56,6 +56,17 @@ def _cand(name, ratio, held, dbic=-1e4):
     return engine.Candidate(name, {}, dbic, ratio, ratio, 0.0, ratio, held=held)
 
 
+def scorer_fitting(form, fitted: list):
+    """A scorer whose ``score_form`` fits only ``form`` (noting each fit in ``fitted``) and returns the candidate given."""
+    def scorer_with(r):
+        def score_form(name, ext):
+            fitted.append(ext)
+            assert ext is form
+            return r
+        return SimpleNamespace(score_form=score_form)
+    return scorer_with
+
+
 def _held(**levels):
     """Blocks whose RMS is each given level (one residual point of that value, unit sigma)."""
     return {k: (np.array([v]), np.ones(1)) for k, v in levels.items()}

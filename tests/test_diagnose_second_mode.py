@@ -11,7 +11,7 @@ from labrig.diagnose import engine, second_mode
 from labrig.diagnose.catalogue import Context, frf_by_pressure
 from labrig.diagnose.second_mode import SECOND_MODE, coupled_resonator, coupling
 from labrig.physics import presets, transfer
-from test_diagnose_rival import _cand, _held
+from test_diagnose_rival import _cand, _held, scorer_fitting
 
 P = (612.0, 4287.0)
 
@@ -81,13 +81,7 @@ def test_the_second_mode_takes_the_verdict_only_where_it_halves_a_displacement_c
     base, acc = {"frf_d": 9.9, "step_d": 0.9}, {"frf_d": 1.0, "step_d": 1.0}
     delay = _cand("time_delay", 0.33, _held(frf_d=3.3, step_d=0.9))
     fitted = []
-
-    def scorer_with(r):
-        def score_form(name, ext):
-            fitted.append(ext)
-            assert ext is SECOND_MODE
-            return r
-        return SimpleNamespace(score_form=score_form)
+    scorer_with = scorer_fitting(SECOND_MODE, fitted)
 
     coupled = engine.Candidate("second_mode", {"f2_Hz": 20.1, "zeta2": 0.07, "mu": 0.19}, -689.0, 0.1, 0.1, 0.0, 0.1,
                                held=_held(frf_d=1.1, step_d=0.9), ext=SECOND_MODE)

@@ -110,6 +110,9 @@ class Extension:
     inner_dof: Callable[[Context], int] | None = None
     # blocks of which the base must miss one for the form to be fitted (empty: any): a form whose signature sits there
     needs: frozenset[str] = frozenset()
+    # the least-squares' parameter scale: the Jacobian's columns, or the parameters' own units (1.0) where a parameter
+    # no datum reads at the start (its column ~0) would be sent far by the Jacobian's scale (families' ``varying``)
+    x_scale: Any = "jac"
 
 
 def _drive(s: SineFeature) -> complex:

@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, Extension, _drive, baseline, cosine_harmonics, specimen_for
+from labrig.diagnose.challenger import Challenger
 from labrig.diagnose.features import step_grid
 from labrig.physics import timeresp
 
@@ -87,17 +88,6 @@ CURRENT_READING = Extension("current_reading", ("sat_A", "sharpness"), (0.01, 2.
                             form="compressed", start=_start)
 
 
-def challenges(named: str, structured: list[str]) -> bool:
-    """Whether the compressed reading is fitted against the named cause: one of the current's distortion, on a session
-    whose current harmonics the baseline leaves structured."""
-    return named in CHALLENGED and "harm_i" in structured
-
-
-def takes(ratio: float, named_ratio: float) -> bool:
-    """Whether the compressed reading's held-out ratio halves the named cause's (``SHARE``)."""
-    return ratio <= SHARE * named_ratio
-
-
 def describe(params: dict) -> str:
     """What read the current, by the fitted parameters."""
     return (f"the current was read through an amplifier that compresses its large readings (saturating towards "
@@ -105,10 +95,5 @@ def describe(params: dict) -> str:
             f"amplifier at its rails)")
 
 
-def detail(r: dict) -> dict:
-    """The ``residual.where`` entry saying what read the current and what it took the verdict from (``r``: the JSON's
-    ``current_reading``)."""
-    return {"block": "current_reading", "level": r["heldout_ratio"], "over_accuracy": r["its_ratio"] / max(r["heldout_ratio"], 1e-12),
-            "detail": f"{describe(r['params'])}: it predicts the held-out half at {r['heldout_ratio']:.3f} of the baseline's "
-                      f"error against {r['its_ratio']:.3f} for {r['instead_of']}",
-            "blocks": list(r["blocks_it_lowers"]), "sat_A": r["params"]["sat_A"]}
+CHALLENGER = Challenger(CURRENT_READING, CHALLENGED, "harm_i", "current_reading", describe, "sat_A", SHARE)
+challenges, takes, detail = CHALLENGER.challenges, CHALLENGER.takes, CHALLENGER.detail

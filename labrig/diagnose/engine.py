@@ -29,7 +29,6 @@ from labrig.diagnose.parallel import forked_map
 from labrig.diagnose.pressure_law import AT_THE_CLAMP, base_form, fitted_pressures, scaled
 from labrig.diagnose.drive_line import series_contexts, series_reading
 from labrig.diagnose import current_reading, second_mode
-from labrig.diagnose.current_reading import CURRENT_READING
 from labrig.diagnose.rivals import DRIVE_PATH, SERIES_ELEMENT, VARYING_SERIES, rival_detail
 from labrig.diagnose.second_mode import SECOND_MODE
 from labrig.diagnose.step_windows import step_windows, where_entry as step_window_entry
@@ -429,7 +428,7 @@ def _fit_extension(name: str, ctx: Context, ext: Extension | None = None) -> tup
     first = [np.clip(ext.start(ctx), ext.lo, ext.hi)] if ext.start is not None else []
     for x0 in first + _starts(name, ext):
         try:
-            r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale="jac", max_nfev=60, ftol=FIT_TOL, xtol=FIT_TOL)
+            r = least_squares(res, x0, bounds=(ext.lo, ext.hi), x_scale=ext.x_scale, max_nfev=60, ftol=FIT_TOL, xtol=FIT_TOL)
         except (ValueError, FloatingPointError):
             continue
         c = float(np.sum(r.fun**2))
@@ -747,9 +746,10 @@ class Rival:
                 "instead_of": self.instead_of.name, "its_ratio": self.instead_of.heldout_ratio, "blocks_it_lowers": self.lowered}
 
 
+CHALLENGERS = (second_mode.CHALLENGER, current_reading.CHALLENGER)
 # the rivals by their extension's name: the JSON key each is reported under, and its ``residual.where`` entry
-RIVAL_KEYS = {"drive_path": "drive_path", SECOND_MODE.name: "second_mode", CURRENT_READING.name: "current_reading"}
-RIVAL_DETAIL = {"drive_path": rival_detail, "second_mode": second_mode.detail, "current_reading": current_reading.detail}
+RIVAL_KEYS = {"drive_path": "drive_path", **{ch.ext.name: ch.key for ch in CHALLENGERS}}
+RIVAL_DETAIL = {"drive_path": rival_detail, **{ch.key: ch.detail for ch in CHALLENGERS}}
 
 
 def _rival_forms(structured: list[str], untouched: list[str]) -> list:
@@ -785,14 +785,11 @@ def _rival(scorer: _Scorer, named: list[Candidate], base_rms: dict[str, float], 
         lowered = _lowers(r, untouched, base_rms)
         if lowered:
             won.append(Rival(r, named[0], lowered))
-    if second_mode.challenges(named[0].name, structured):  # its signature: the named cause's error halved (second_mode.py)
-        r = scorer.score_form(SECOND_MODE.name, SECOND_MODE)
-        if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and second_mode.takes(r.heldout_ratio, named[0].heldout_ratio):
-            won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
-    if current_reading.challenges(named[0].name, structured):  # its signature: the named cause's error halved (current_reading.py)
-        r = scorer.score_form(CURRENT_READING.name, CURRENT_READING)
-        if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and current_reading.takes(r.heldout_ratio, named[0].heldout_ratio):
-            won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
+    for ch in CHALLENGERS:  # their signature: the named cause's error halved (challenger.py)
+        if ch.challenges(named[0].name, structured):
+            r = scorer.score_form(ch.ext.name, ch.ext)
+            if r.delta_bic < DBIC_EFFECT and r.heldout_ratio < RATIO_EFFECT and ch.takes(r.heldout_ratio, named[0].heldout_ratio):
+                won.append(Rival(r, named[0], _lowers(r, structured, base_rms)))
     return min(won, key=lambda w: w.fit.heldout_ratio, default=None)
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from labrig.diagnose.catalogue import Context, Extension, baseline, specimen_for, step_through
+from labrig.diagnose.challenger import Challenger
 from labrig.physics import transfer
 
 CHALLENGED = frozenset({"time_delay", "sensor_offset"})
@@ -71,17 +72,6 @@ SECOND_MODE = Extension("second_mode", ("f2_Hz", "zeta2", "mu"), (10.0, 0.1, 0.2
 STARTS = ((4.0, 0.05, 0.2), (25.0, 0.05, 0.2))  # besides 10 Hz: the strips' first modes span 3-30 Hz
 
 
-def challenges(named: str, structured: list[str]) -> bool:
-    """Whether the second resonator is fitted against the named cause: one of the displacement's linear path, on a
-    session whose displacement FRF the baseline leaves structured."""
-    return named in CHALLENGED and "frf_d" in structured
-
-
-def takes(ratio: float, named_ratio: float) -> bool:
-    """Whether the second resonator's held-out ratio halves the named cause's (``SHARE``)."""
-    return ratio <= SHARE * named_ratio
-
-
 def describe(params: dict) -> str:
     """What the strip was coupled to, by the fitted parameters."""
     return (f"the strip's first mode was coupled to a second resonator at {params['f2_Hz']:.3g} Hz (damping "
@@ -89,10 +79,5 @@ def describe(params: dict) -> str:
             f"arm or the laser's mount resonating with it")
 
 
-def detail(r: dict) -> dict:
-    """The ``residual.where`` entry saying what the second resonator is and what it took the verdict from (``r``: the
-    JSON's ``second_mode``)."""
-    return {"block": "second_mode", "level": r["heldout_ratio"], "over_accuracy": r["its_ratio"] / max(r["heldout_ratio"], 1e-12),
-            "detail": f"{describe(r['params'])}: it predicts the held-out half at {r['heldout_ratio']:.3f} of the baseline's error "
-                      f"against {r['its_ratio']:.3f} for {r['instead_of']}, which took up part of it",
-            "blocks": list(r["blocks_it_lowers"]), "f2_Hz": r["params"]["f2_Hz"]}
+CHALLENGER = Challenger(SECOND_MODE, CHALLENGED, "frf_d", "second_mode", describe, "f2_Hz", SHARE, ", which took up part of it")
+challenges, takes, detail = CHALLENGER.challenges, CHALLENGER.takes, CHALLENGER.detail
