@@ -120,8 +120,11 @@
 * Fresh37 held-out set (``--set fresh37``, bench/inject_fresh37.py ``fresh37_cases``): two more forms per effect and
   four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 181-183, the paper
   strip 8 mm free, a new data shape (each record placed on the session clock by its file's modification time).
+* Fresh38 held-out set (``--set fresh38``, bench/inject_fresh38.py ``fresh38_cases``): two more forms per effect and
+  four more outside structures (two cases each) by an author who had not seen the diagnosis, seeds 184-186, the paper
+  strip 7 mm free, a new data shape (a logger rotating its file every 5 or 10 min, a series across it in parts).
 
-Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|fresh26|fresh27|fresh28|fresh29|fresh30|fresh31|fresh32|fresh33|fresh34|fresh35|fresh36|fresh37|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
+Run: python bench/diagnose.py [--set both|tuning|validation|fresh|fresh2|fresh3|fresh4|fresh5|fresh6|fresh7|fresh8|fresh9|fresh10|fresh11|fresh12|fresh13|fresh14|fresh15|fresh16|fresh17|fresh18|fresh19|fresh20|fresh21|fresh22|fresh23|fresh24|fresh25|fresh26|fresh27|fresh28|fresh29|fresh30|fresh31|fresh32|fresh33|fresh34|fresh35|fresh36|fresh37|fresh38|all] [--seeds 3] [--none-seeds 10] [--first-seed 1]
                               [--jobs 2] [--protocol paper-sweep] [--cache .cache] [--reuse] [--stored] [--full]
 (--stored reports what the cached files hold after a run cut short; the diagnosis' elapsed_s then stands for the
 wall time, the fit not included)
@@ -233,7 +236,8 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh34": "fresh34 held-out set (diagnosed once unseen at 089db7d; seen since)",
           "fresh35": "fresh35 held-out set (diagnosed once unseen at 8bab252; seen since)",
           "fresh36": "fresh36 held-out set (diagnosed once unseen at 4c5e4c5; seen since)",
-          "fresh37": "fresh37 held-out set (diagnosed once unseen at 5c5a638; seen since)"}
+          "fresh37": "fresh37 held-out set (diagnosed once unseen at 5c5a638; seen since)",
+          "fresh38": "fresh38 held-out set (unseen)"}
 
 
 def validation(a, name: str = "validation") -> list:
