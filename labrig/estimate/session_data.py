@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from labrig.errors import BadInput
+from labrig.estimate.pieces import join_pieces
 from labrig.records import HOLD_KINDS, SINE_KINDS, RecordKind
 from labrig.estimate import (
     GAP,
@@ -404,6 +405,7 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
     notes: list[str] = []
     loose: list[TimeRecord] = []
     rounded = scanned = held_rows = 0
+    groups: dict[int, tuple[PressureData | None, list[TimeRecord]]] = {}  # the records read, by clamp setting
     with SessionReader(p) as r:
         sample = dict(r.sample)
         steps = r.steps()  # read once: the clamp settings are grouped from all of them before any is bucketed
@@ -443,13 +445,18 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
             if not _finite(rec.t, rec.v, rec.i, rec.d) or rec.t.size < 8:
                 notes.append(f"step {st.name}: record has NaN or too few samples, not used")
                 continue
+            groups.setdefault(id(bucket), (bucket, []))[1].append(rec)
+    # a record written in pieces (a logger's file rotated mid-record) is read as the one record it was (pieces.py):
+    # its pieces share a clamp setting
+    for bucket, recs in groups.values():
+        for rec in join_pieces(recs, notes):
             flat = held_channels(rec)
             if set(flat) - {"current"}:
-                notes.append(f"step {st.name}: {' and '.join(flat)} constant through the record (a reading held, "
+                notes.append(f"step {rec.name}: {' and '.join(flat)} constant through the record (a reading held, "
                              "frozen or out of range: no noise to weigh it by), not used")
                 continue
             if flat:  # the displacement is still a measurement: a lab that logs no current may write it as zeros
-                notes.append(f"step {st.name}: current constant through the record (not logged, or held): its current "
+                notes.append(f"step {rec.name}: current constant through the record (not logged, or held): its current "
                              "carries no noise to weigh it by")
             fresh = held_scan(rec)
             if fresh is not None:  # a faster scan clock's repeats of each sample left out: the samples as they arrived
@@ -461,7 +468,7 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
                 rounded += 1
                 rec.t = grid
             filled = 0
-            if st.kind not in SINE_KINDS:  # a sine is demodulated at its samples' own times: gaps cost it nothing
+            if rec.kind not in SINE_KINDS:  # a sine is demodulated at its samples' own times: gaps cost it nothing
                 t_read = rec.t
                 filled, gaps, rec.t, (rec.i, rec.d) = regular_grid(rec.t, rec.i, rec.d)
                 if filled:
@@ -469,13 +476,13 @@ def load_session(path: str | Path, displacement_sign: int = 1, current_sign: int
                     # model where samples were read (a logger that thins a step's plateau, a buffer's lost packets)
                     rec.v, rec.filled = held(t_read, rec.v, rec.t), filled_mask(t_read, rec.t)
             if filled:
-                notes.append(f"step {st.name}: {filled} samples missing in {gaps} gaps of its time stamps, interpolated (the drive held)")
+                notes.append(f"step {rec.name}: {filled} samples missing in {gaps} gaps of its time stamps, interpolated (the drive held)")
             if bucket is None:
                 loose.append(rec)
                 continue
             bucket.records.append(rec)
-            if st.kind == RecordKind.STEPPED_SINE:
-                bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(st.metadata["frequency_Hz"]), *sine_cycles(rec)))
+            if rec.kind == RecordKind.STEPPED_SINE:
+                bucket.sines.append(sine_estimate(rec.t, rec.v, rec.i, rec.d, float(rec.meta["frequency_Hz"]), *sine_cycles(rec)))
     if scanned:
         notes.append(f"{scanned} records logged on a scan clock faster than their samples, each sample repeated until the next "
                      f"arrived: the {held_rows} repeated rows left out")
