@@ -237,7 +237,7 @@ LABELS = {"validation": "validation set (seen in the first pass)", "fresh": "fre
           "fresh35": "fresh35 held-out set (diagnosed once unseen at 8bab252; seen since)",
           "fresh36": "fresh36 held-out set (diagnosed once unseen at 4c5e4c5; seen since)",
           "fresh37": "fresh37 held-out set (diagnosed once unseen at 5c5a638; seen since)",
-          "fresh38": "fresh38 held-out set (unseen)"}
+          "fresh38": "fresh38 held-out set (diagnosed once unseen at 7d62672; seen since)"}
 
 
 def validation(a, name: str = "validation") -> list:

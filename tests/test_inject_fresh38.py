@@ -65,11 +65,11 @@ def _drive_rec(t0: float, v: np.ndarray, fs: float, d: np.ndarray | None = None,
     return _rec(kind, t, np.asarray(v, float), np.zeros(v.size) if d is None else d, i, p=p)
 
 
-@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS, every=True))
+@pytest.mark.parametrize("truth,name,fn", t2.form_params(FORMS))
 def test_form_changes_its_signals_only(truth, name, fn):
     """tests/test_inject_fresh2.py's check (the entries kept, every column finite and of its shape, exactly the columns
-    of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns: every form of the
-    newest set."""
+    of CHANGES changed, displacement and current visibly, but for FAINT) with this set's columns: its forms sampled as
+    every seen set's (``form_params``)."""
     t2.check_form_changes(name, fn, CHANGES, FAINT)
 
 
