@@ -64,6 +64,7 @@ from labrig.diagnose.load_cell import RECORD_SHARE, follows_drive
 from labrig.diagnose.detrended import detrended
 from labrig.diagnose.frozen import FROZEN_RUN, frozen
 from labrig.diagnose.precursor import precursor
+from labrig.diagnose import spectra_axis as axis
 from labrig.diagnose.reversed_blocks import reversed_blocks
 from labrig.diagnose.spells import robust_sigma
 from labrig.estimate import MAINS_HZ, folded
@@ -376,9 +377,10 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
     out["detrended"] = detrended(sd)  # the step records' displacement stored with its mean taken off (detrended.py)
     out["frozen"] = frozen(sd)  # a channel repeating one reading while the other goes on (frozen.py)
     out["precursor"] = precursor(sd)  # a reading that leaves its rest before the drive's edges (precursor.py)
+    out["spectra_axis"] = axis.spectra_axis(sd)  # the spectra's frequency column out of step (spectra_axis.py)
     out["flagged"] = any(out[k]["flagged"] for k in ("load_cell", "reversed", "bursts", "lines", "wander", "phase_noise", "spells", "shifts",
                                                       "clipped", "wrapped", "arming", "locked", "detrended", "frozen",
-                                                      "precursor"))
+                                                      "precursor", "spectra_axis"))
     wander = [a[ch]["wander"] for a in per for ch in ("displacement", "current") if np.isfinite(a[ch]["wander"])]
     out["max"] = {"burst_z": max((a[ch]["z_max"] for a in per for ch in ("displacement", "current")), default=0.0),
                   "line_power": max((a[ch]["line_max"] for a in per for ch in ("displacement", "current")), default=0.0),
@@ -391,7 +393,9 @@ def artefacts(sd: SessionData) -> dict[str, Any]:
                   "reversed": 2.0 if out["reversed"]["flagged"] else 0.0, "locked": 2.0 if out["locked"]["flagged"] else 0.0,
                   "detrended": 2.0 if out["detrended"]["flagged"] else 0.0,
                   "frozen_run": out["frozen"]["longest_run"] if out["frozen"]["flagged"] else 0,
-                  "precursor": out["precursor"]["largest"] if out["precursor"]["flagged"] else 0.0}
+                  "precursor": out["precursor"]["largest"] if out["precursor"]["flagged"] else 0.0,
+                  "spectra_axis": out["spectra_axis"]["mismatch"] / max(out["spectra_axis"]["shifted"], 1e-12) / axis.GAIN
+                  if out["spectra_axis"]["flagged"] else 0.0}
     return out
 
 
@@ -410,7 +414,7 @@ def level(a: dict[str, Any]) -> float:
                      m.get("phase_noise", 0.0) / PHASE_NOISE, m.get("spell", 0.0) / spells.SPELL_POWER, m.get("shift", 0.0) / spells.SHIFT_Z,
                      m.get("clip_run", 0) / CLIP_RUN, m.get("arming_z", 0.0) / ARMING_Z, m.get("wrap_share", 0.0) / WRAP_SHARE, m.get("load_cell_share", 0.0) / RECORD_SHARE, m.get("reversed", 0.0),
                      m.get("locked", 0.0), m.get("detrended", 0.0), m.get("frozen_run", 0) / FROZEN_RUN,
-                     m.get("precursor", 0.0)))
+                     m.get("precursor", 0.0), m.get("spectra_axis", 0.0)))
 
 
 def _records(names: list[str], kind: str = "") -> str:
@@ -481,6 +485,8 @@ def detail(a: dict[str, Any]) -> str:
                      f"{q['share']:.0%}+ of its response) in {_records(_by_channel(q['names']), 'step ')}: "
                      f"processing that is not causal (a filter run forward and backward, a centred or spline smoother, an FFT filter), "
                      f"not the strip, which cannot move before its drive")
+    if a.get("spectra_axis", {}).get("flagged"):
+        parts.append(axis.detail(a["spectra_axis"]))
     if a.get("load_cell", {}).get("flagged"):
         c = a["load_cell"]
         parts.append(f"the load cell's force carries the drive's frequency in {_records(c['records'], 'sine ')} of {c['read']} read, one "

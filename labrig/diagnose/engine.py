@@ -838,8 +838,10 @@ def _recording_decides(clock: dict[str, Any], monitor: dict[str, Any], recording
     or carried round it, a reading whose sign changed between the settings (reversed_blocks.py), foreign lines on the
     drive's lattice (drive_locked.py), step records stored with their mean taken off (detrended.py), a reading frozen
     while the other channel goes on (frozen.py, but a memory's holds), a reading that moves before the drive's edges
-    (precursor.py, but a time delay's lead)."""
+    (precursor.py, but a time delay's lead), spectra whose frequency column is out of step with their readings
+    (spectra_axis.py: every fit reads them at the wrong frequencies)."""
     return bool(clock["flagged"] or monitor["flagged"] or recording["wrapped"]["flagged"] or recording["reversed"]["flagged"]
+                or recording["spectra_axis"]["flagged"]
                 or recording["locked"]["flagged"] or recording["detrended"]["flagged"]
                 or (recording["frozen"]["decides"] and not _held_by_memory(named, recording, "frozen"))
                 or (recording["precursor"]["decides"] and not _leads_explain(named))
