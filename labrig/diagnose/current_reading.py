@@ -96,4 +96,4 @@ def describe(params: dict) -> str:
 
 
 CHALLENGER = Challenger(CURRENT_READING, CHALLENGED, "harm_i", "current_reading", describe, "sat_A", SHARE)
-challenges, takes, detail = CHALLENGER.challenges, CHALLENGER.takes, CHALLENGER.detail
+detail = CHALLENGER.detail  # its residual.where entry, by the JSON it is reported under

@@ -884,8 +884,7 @@ def diagnose(sd: SessionData, specimens: dict, valley: dict | None = None, spect
     rivals = dict.fromkeys(RIVAL_KEYS.values(), None)  # the JSON's key per kind of rival: the one that won, reported
     if rival is not None:
         rivals[RIVAL_KEYS[rival.fit.name]] = rival.report()
-    if rival is not None:
-        named = []  # the strip saw a drive other than the one recorded: no catalogued cause (docs/diagnosis.md)
+        named = []  # a structure outside the catalogue took the verdict: no catalogued cause (docs/diagnosis.md)
     clock = clock_offset(feats.sines, FRF_FLOOR)
     recording = artefacts(sd)
     # -1: the rig reads the bend (the current) reversed, taken with the model's sign before the fit (fit/polarity.py)

@@ -80,4 +80,4 @@ def describe(params: dict) -> str:
 
 
 CHALLENGER = Challenger(SECOND_MODE, CHALLENGED, "frf_d", "second_mode", describe, "f2_Hz", SHARE, ", which took up part of it")
-challenges, takes, detail = CHALLENGER.challenges, CHALLENGER.takes, CHALLENGER.detail
+detail = CHALLENGER.detail  # its residual.where entry, by the JSON it is reported under
